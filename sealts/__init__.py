@@ -1,0 +1,1 @@
+"""sealts: transient soft-EHL simulation of reciprocating rod seals on PETSc."""

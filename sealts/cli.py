@@ -1,0 +1,110 @@
+"""Command line: ``sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]``.
+
+Also ``python -m sealts``. Subcommands:
+
+  run    run a scene (the embedded default scene without one); every option that sealts does
+         not know goes to PETSc (-ts_type, -snes_monitor, -pc_type, -log_view, -help, ...)
+  check  validate a scene file and print nothing else
+  keys   list every scene key with its unit, range and default
+
+Exit codes: 0 success, 2 bad input (scene, files, usage), 3 a solve that failed.
+"""
+import sys
+from pathlib import Path
+
+from .scene import SceneError, default_scene, load_scene
+
+USAGE = """usage: sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]
+       sealts check SCENE.toml
+       sealts keys"""
+
+
+def _split_run_args(args):
+    scene, outdir, petsc = None, None, []
+    i = 0
+    if args and not args[0].startswith("-"):
+        scene, i = args[0], 1
+    while i < len(args):
+        a = args[i]
+        if a in ("-o", "--output"):
+            if i + 1 >= len(args):
+                raise SceneError(f"{a} needs a directory")
+            outdir, i = args[i + 1], i + 2
+            continue
+        if a.startswith("--output="):
+            outdir = a.split("=", 1)[1]
+        else:
+            petsc.append(a)
+        i += 1
+    return scene, outdir, petsc
+
+
+def _init_petsc(argv, scene):
+    import petsc4py
+    petsc4py.init(["sealts"] + argv)
+    from petsc4py import PETSc
+    opts = PETSc.Options()
+    for key, value in scene.petsc_options.items():
+        if not opts.hasName(key):  # the command line wins
+            opts[key] = value
+    return PETSc
+
+
+def run(args):
+    scene_path, outdir, petsc_args = _split_run_args(args)
+    scene = load_scene(scene_path) if scene_path else default_scene()
+    PETSc = _init_petsc(petsc_args, scene)
+    comm = PETSc.COMM_WORLD
+    out = Path(outdir) if outdir else Path("results") / scene.name
+    from .io import Writer
+    from .problem.film_run import run_film
+    writer = Writer(out, comm, plots=scene.output.plot)
+    try:
+        summary = run_film(scene, writer, comm)
+    finally:
+        writer.close()
+    if comm.getRank() == 0 and scene.output.progress:
+        r = summary["results"]
+        print(f"{scene.name}: p_max = {r['p_max']:.6g} MPa at y = {r['y_at_p_max']:.4g} mm, "
+              f"load = {r['load']:.6g} N, Q_out = {r['Q_out']:.6g} mm^3/s, "
+              f"friction = {r['friction_fluid']:.6g} N  "
+              f"({summary['wall_time_s']:.2f} s wall)")
+        print(f"written: {out}/summary.json, profiles.csv" +
+              (", series.csv" if summary["analysis"] == "transient" else "") +
+              (", PNG plots" if scene.output.plot else ""))
+    return 0
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv or argv[0] in ("-h", "--help"):
+        print(USAGE)
+        return 0 if argv else 2
+    cmd, rest = argv[0], argv[1:]
+    try:
+        if cmd == "run":
+            return run(rest)
+        if cmd == "check":
+            if len(rest) != 1:
+                raise SceneError("check takes one scene file")
+            load_scene(rest[0])
+            return 0
+        if cmd == "keys":
+            from .scene.schema import Scene
+            from .scene.spec import describe
+            print("\n".join(describe(Scene)))
+            return 0
+        raise SceneError(f"unknown command {cmd!r}\n{USAGE}")
+    except SceneError as e:
+        print(f"scene error: {e}", file=sys.stderr)
+        return 2
+    except Exception as e:  # solver failures are reported, not dumped
+        from .problem import SolveError
+        if isinstance(e, SolveError):
+            print(f"solve error: {e}", file=sys.stderr)
+            return 3
+        raise
+
+
+if __name__ == "__main__":
+    sys.exit(main())

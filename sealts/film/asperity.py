@@ -1,0 +1,36 @@
+"""Asperity (solid) contact pressure, paper Eq. 44-45.
+
+    p_s(h) = 0                                              h >= h_mix
+    p_s(h) = p_mix / (e - 1) (1 - h/h_mix) (exp(1 - h/h_mix) - 1)   h <  h_mix
+
+p_s is C1 at h = h_mix (value and slope vanish), equals p_mix at h = 0 and keeps growing for
+h < 0. The nodal force is p_s A_i (Eq. 45).
+"""
+import math
+
+import numba
+import numpy as np
+
+_E1 = math.e - 1.0
+
+
+@numba.njit(cache=True)
+def asperity_pressure(h, h_mix, p_mix):
+    """Return (p_s, dp_s/dh) for one separation h (mm), with p in MPa."""
+    if h >= h_mix:
+        return 0.0, 0.0
+    x = 1.0 - h / h_mix
+    ex = np.exp(x)
+    p = p_mix / _E1 * x * (ex - 1.0)
+    dp_dx = p_mix / _E1 * (ex - 1.0 + x * ex)
+    return p, -dp_dx / h_mix
+
+
+@numba.njit(cache=True)
+def asperity_pressure_array(h, h_mix, p_mix):
+    """Vectorised :func:`asperity_pressure` over an array of separations."""
+    p = np.empty_like(h)
+    dp = np.empty_like(h)
+    for i in range(h.size):
+        p[i], dp[i] = asperity_pressure(h[i], h_mix, p_mix)
+    return p, dp

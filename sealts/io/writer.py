@@ -1,0 +1,77 @@
+"""Run output, written as the run goes so that an interrupted run keeps what it wrote.
+
+OUTDIR/
+  summary.json   scene, wall time, step and iteration counts, key results (units inside)
+  profiles.csv   long format: t, y, h, p, tau [, p_asperity, tau_solid]  (mm, MPa, s)
+  series.csv     transient runs: one row per accepted step
+  profiles.png   film thickness (um) and pressure along y at each output time
+  series.png     transient runs: flows, leakage and time step over time
+
+Only rank 0 writes. Rows are flushed as they come.
+"""
+import csv
+import json
+import os
+from pathlib import Path
+
+import numpy as np
+
+
+class Writer:
+    def __init__(self, outdir, comm, plots=True):
+        self.dir = Path(outdir)
+        self.root = comm.getRank() == 0
+        self.plots = plots
+        self._files = {}
+        self._profiles = []
+        self._series = []
+        if self.root:
+            self.dir.mkdir(parents=True, exist_ok=True)
+            for name in ("profiles.csv", "series.csv", "summary.json"):
+                (self.dir / name).unlink(missing_ok=True)
+
+    def _csv(self, name, fields):
+        if name not in self._files:
+            f = open(self.dir / name, "w", newline="")
+            w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
+            w.writeheader()
+            self._files[name] = (f, w)
+        return self._files[name]
+
+    def profile(self, t, prof):
+        if not self.root:
+            return
+        self._profiles.append((t, prof))
+        keys = ["t"] + list(prof)
+        f, w = self._csv("profiles.csv", keys)
+        cols = [np.asarray(prof[k]) for k in prof]
+        for i in range(cols[0].size):
+            w.writerow(dict(zip(keys, [f"{t:.9g}"] + [f"{c[i]:.10g}" for c in cols])))
+        f.flush()
+
+    def series(self, row):
+        if not self.root:
+            return
+        self._series.append(row)
+        f, w = self._csv("series.csv", list(row))
+        w.writerow({k: (f"{v:.10g}" if isinstance(v, float) else v) for k, v in row.items()})
+        f.flush()
+
+    def summary(self, data):
+        if not self.root:
+            return
+        tmp = self.dir / "summary.json.tmp"
+        tmp.write_text(json.dumps(data, indent=2) + "\n")
+        os.replace(tmp, self.dir / "summary.json")
+
+    def close(self):
+        if not self.root:
+            return
+        for f, _ in self._files.values():
+            f.close()
+        self._files.clear()
+        if self.plots and self._profiles:
+            from .plots import plot_profiles, plot_series
+            plot_profiles(self._profiles, self.dir / "profiles.png")
+            if self._series:
+                plot_series(self._series, self.dir / "series.png")

@@ -1,0 +1,252 @@
+"""Problem: owns the unknown vector, the COO Jacobian, and the PETSc TS / SNES.
+
+The discrete system is one DAE
+
+    F(t, U, U') = sum_terms F_term(t, U, U') = 0,
+    J = dF/dU + shift dF/dU'   (PETSc's IJacobian),
+
+and a steady scene solves F(t, U, 0) = 0 with SNES. Each physics term supplies
+
+* ``rows, cols``: its Jacobian's COO pattern in global unknown numbers, fixed for the run;
+* ``add_residual(t, u, udot, f)``: adds its part of F to the full-length array f;
+* ``jacobian_values(t, u, udot, shift)``: the values for its pattern (duplicates add up).
+
+The Problem concatenates the patterns once (``setPreallocationCOO``) and, per Newton step,
+concatenates the values (``setValuesCOO``). Terms never see PETSc objects, so adding a term
+touches no other. ``setFromOptions()`` is called last, so the command line wins over the
+defaults set here and over a scene's ``[petsc]`` table.
+
+Parallel runs: PETSc distributes rows of U, F and J by contiguous blocks. Every rank gathers
+the full U (the film-only problems are one-dimensional and small), evaluates all terms, and
+keeps the rows it owns; each rank passes only its own COO entries. The distributed linear
+solve is PETSc's (the default parallel preconditioner is ``redundant`` LU).
+"""
+from dataclasses import dataclass, field
+
+import numpy as np
+from petsc4py import PETSc
+
+
+class SolveError(RuntimeError):
+    """A solve that PETSc could not complete (diverged SNES, TS that could not step)."""
+
+
+class Term:
+    """Interface of a physics term (see module docstring)."""
+
+    rows: np.ndarray
+    cols: np.ndarray
+
+    def add_residual(self, t, u, udot, f):
+        raise NotImplementedError
+
+    def jacobian_values(self, t, u, udot, shift):
+        raise NotImplementedError
+
+
+@dataclass
+class Counters:
+    steps: int = 0
+    rejected: int = 0
+    newton: int = 0
+    linear: int = 0
+    residuals: int = 0
+    jacobians: int = 0
+    extra: dict = field(default_factory=dict)
+
+
+class Problem:
+    """A DAE assembled from terms, solved with PETSc TS (transient) or SNES (steady)."""
+
+    def __init__(self, n, terms, comm=None, prefix=None):
+        self.comm = comm or PETSc.COMM_WORLD
+        self.n = int(n)
+        self.terms = list(terms)
+        self.prefix = prefix
+        self.counters = Counters()
+
+        self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
+        self.rstart, self.rend = self.U.getOwnershipRange()
+        self._scatter, self._useq = PETSc.Scatter.toAll(self.U)
+        self._udseq = self._useq.duplicate()
+
+        rows = np.concatenate([np.asarray(t.rows, PETSc.IntType) for t in self.terms])
+        cols = np.concatenate([np.asarray(t.cols, PETSc.IntType) for t in self.terms])
+        self._mine = (rows >= self.rstart) & (rows < self.rend)
+        self.J = PETSc.Mat().create(comm=self.comm)
+        self.J.setSizes(((self.rend - self.rstart, self.n), (self.rend - self.rstart, self.n)))
+        self.J.setType(PETSc.Mat.Type.AIJ)
+        self.J.setPreallocationCOO(rows[self._mine], cols[self._mine])
+        self.nnz_coo = int(self._mine.sum())
+
+    # ---- evaluation on full-length numpy arrays --------------------------------------------
+    def gather(self, V, seq=None):
+        """Full copy of a distributed vector on every rank (a numpy view, do not keep)."""
+        seq = self._useq if seq is None else seq
+        self._scatter.scatter(V, seq, addv=PETSc.InsertMode.INSERT_VALUES,
+                              mode=PETSc.ScatterMode.FORWARD)
+        return seq.getArray(readonly=True)
+
+    def residual(self, t, u, udot):
+        f = np.zeros(self.n)
+        for term in self.terms:
+            term.add_residual(t, u, udot, f)
+        return f
+
+    def jacobian_values(self, t, u, udot, shift):
+        return np.concatenate([np.asarray(term.jacobian_values(t, u, udot, shift), float)
+                               for term in self.terms])
+
+    def jacobian_dense(self, t, u, udot, shift):
+        """Assembled Jacobian as a dense array (serial tests and diagnostics only)."""
+        rows = np.concatenate([t_.rows for t_ in self.terms])
+        cols = np.concatenate([t_.cols for t_ in self.terms])
+        a = np.zeros((self.n, self.n))
+        np.add.at(a, (rows, cols), self.jacobian_values(t, u, udot, shift))
+        return a
+
+    # ---- PETSc callbacks -------------------------------------------------------------------
+    def _set_owned(self, F, f):
+        F.setArray(f[self.rstart:self.rend])
+
+    def ifunction(self, ts, t, U, Udot, F):
+        u = self.gather(U).copy()
+        ud = self.gather(Udot, self._udseq)
+        self._set_owned(F, self.residual(t, u, ud))
+        self.counters.residuals += 1
+
+    def ijacobian(self, ts, t, U, Udot, shift, J, P):
+        u = self.gather(U).copy()
+        ud = self.gather(Udot, self._udseq)
+        vals = self.jacobian_values(t, u, ud, shift)[self._mine]
+        P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
+        if J != P:
+            J.assemble()
+        self.counters.jacobians += 1
+
+    def snes_function(self, snes, U, F):
+        u = self.gather(U)
+        self._set_owned(F, self.residual(self.t_steady, u, np.zeros(self.n)))
+        self.counters.residuals += 1
+
+    def snes_jacobian(self, snes, U, J, P):
+        u = self.gather(U)
+        vals = self.jacobian_values(self.t_steady, u, np.zeros(self.n), 0.0)[self._mine]
+        P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
+        if J != P:
+            J.assemble()
+        self.counters.jacobians += 1
+
+    # ---- solver set-up ---------------------------------------------------------------------
+    def _default_linear_solver(self, ksp):
+        ksp.setType(PETSc.KSP.Type.PREONLY)
+        pc = ksp.getPC()
+        if self.comm.getSize() == 1:
+            pc.setType(PETSc.PC.Type.LU)
+        else:
+            pc.setType(PETSc.PC.Type.REDUNDANT)
+
+    def _default_option(self, name, value):
+        """Set an option only where the command line and the scene left it unset."""
+        opts = PETSc.Options(self.prefix)
+        if not opts.hasName(name):
+            opts[name] = value
+
+    def make_snes(self):
+        snes = PETSc.SNES().create(comm=self.comm)
+        if self.prefix:
+            snes.setOptionsPrefix(self.prefix)
+        snes.setFunction(self.snes_function, self.U.duplicate())
+        snes.setJacobian(self.snes_jacobian, self.J)
+        snes.setType(PETSc.SNES.Type.NEWTONLS)
+        snes.getLineSearch().setType(PETSc.SNESLineSearch.Type.BT)
+        snes.setTolerances(rtol=1e-10, atol=1e-12, max_it=50)
+        self._default_linear_solver(snes.getKSP())
+        snes.setFromOptions()
+        return snes
+
+    def make_ts(self, t0, t_end, dt0, monitor=None):
+        ts = PETSc.TS().create(comm=self.comm)
+        if self.prefix:
+            ts.setOptionsPrefix(self.prefix)
+        ts.setProblemType(PETSc.TS.ProblemType.NONLINEAR)
+        ts.setEquationType(PETSc.TS.EquationType.DAE_IMPLICIT_INDEX1)
+        ts.setType(PETSc.TS.Type.BDF)
+        ts.setIFunction(self.ifunction, self.U.duplicate())
+        ts.setIJacobian(self.ijacobian, self.J)
+        ts.setTime(t0)
+        ts.setTimeStep(dt0)
+        ts.setMaxTime(t_end)
+        ts.setMaxSteps(10_000_000)
+        ts.setExactFinalTime(PETSc.TS.ExactFinalTime.MATCHSTEP)
+        ts.setMaxSNESFailures(-1)  # a failed Newton solve rejects the step; TSAdapt retries
+        ts.setTolerances(rtol=1e-6, atol=1e-8)
+        self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
+        snes = ts.getSNES()
+        snes.setType(PETSc.SNES.Type.NEWTONLS)
+        snes.getLineSearch().setType(PETSc.SNESLineSearch.Type.BT)
+        snes.setTolerances(rtol=1e-10, atol=1e-12, max_it=25)
+        self._default_linear_solver(snes.getKSP())
+        if monitor is not None:
+            ts.setMonitor(monitor)
+        ts.setFromOptions()
+        return ts
+
+    # ---- solves ----------------------------------------------------------------------------
+    def _owned(self, u0):
+        X = self.U.duplicate()
+        X.setArray(np.asarray(u0, float)[self.rstart:self.rend])
+        return X
+
+    def solve_steady(self, u0, t=0.0):
+        """Solve F(t, U, 0) = 0 from the initial guess u0; return the full solution."""
+        self.t_steady = t
+        snes = self.make_snes()
+        X = self._owned(u0)
+        snes.solve(None, X)
+        reason = snes.getConvergedReason()
+        self.counters.newton += snes.getIterationNumber()
+        self.counters.linear += snes.getLinearSolveIterations()
+        if reason <= 0:
+            raise SolveError(f"steady Newton solve diverged ({_reason(PETSc.SNES, reason)}); "
+                             "try -snes_monitor and a different -snes_linesearch_type")
+        u = self.gather(X).copy()
+        snes.destroy()
+        return u
+
+    def transient(self, u0, t0, t_end, dt0, stops=(), on_step=None, on_stop=None):
+        """Integrate from t0 to t_end with adaptive steps.
+
+        ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0);
+        ``on_stop(t, u)`` at each time in ``stops`` (hit exactly) and at t_end.
+        """
+        def monitor(ts, step, t, X):
+            if on_step is not None:
+                on_step(ts, step, t, self.gather(X).copy())
+
+        ts = self.make_ts(t0, t_end, dt0, monitor=monitor)
+        X = self._owned(u0)
+        targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
+        for target in targets:
+            ts.setMaxTime(target)
+            ts.solve(X)
+            reason = ts.getConvergedReason()
+            if reason < 0:
+                raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
+                                 f"({_reason(PETSc.TS, reason)}); try a smaller -ts_dt or "
+                                 "-ts_adapt_dt_min")
+            if on_stop is not None:
+                on_stop(ts.getTime(), self.gather(X).copy())
+        c = self.counters
+        c.steps += ts.getStepNumber()
+        c.rejected += ts.getStepRejections()
+        c.newton += ts.getSNESIterations()
+        c.linear += ts.getKSPIterations()
+        u = self.gather(X).copy()
+        ts.destroy()
+        return u
+
+
+def _reason(cls, code):
+    names = {v: k for k, v in vars(cls.ConvergedReason).items() if isinstance(v, int)}
+    return names.get(code, str(code))
