@@ -1,0 +1,67 @@
+"""sealts run: output contract, PETSc options from the command line and from the scene."""
+import csv
+import json
+import subprocess
+import sys
+
+import pytest
+
+from conftest import CONFIGS, ROOT
+
+
+def sealts(*args):
+    return subprocess.run([sys.executable, "-m", "sealts", *args], capture_output=True,
+                          text=True, cwd=ROOT)
+
+
+def test_default_run_writes_the_output_contract(tmp_path):
+    out = tmp_path / "out"
+    r = sealts("run", "-o", str(out))
+    assert r.returncode == 0, r.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    res = summary["results"]
+    assert summary["scene"] == "slider"
+    for key in ("wall_time_s", "steps_accepted", "steps_rejected", "newton_iterations",
+                "linear_iterations"):
+        assert key in summary
+    assert res["p_max"] == pytest.approx(2.75, rel=1e-4)
+    assert res["y_at_p_max"] == pytest.approx(7.5, abs=2e-3)
+    for key in ("load", "Q_in", "Q_out", "friction_fluid"):
+        assert key in res
+    with open(out / "profiles.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert list(rows[0]) == ["t", "y", "h", "p", "tau"]
+    assert len(rows) == 1001
+    assert (out / "profiles.png").stat().st_size > 10_000
+
+
+def test_command_line_petsc_options_reach_the_solvers(tmp_path):
+    r = sealts("run", str(CONFIGS / "squeeze_plates.toml"), "-o", str(tmp_path),
+               "-ts_type", "beuler", "-ts_adapt_type", "none", "-ts_dt", "0.125",
+               "-snes_monitor", "-ts_view")
+    assert r.returncode == 0, r.stderr
+    assert "SNES Function norm" in r.stdout
+    assert "type: beuler" in r.stdout        # the command line beat the scene's bdf
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary["steps_accepted"] == 8    # 1 s at the fixed dt of 0.125 s
+    rows = list(csv.DictReader(open(tmp_path / "series.csv")))
+    assert float(rows[-1]["t"]) == pytest.approx(1.0)
+
+
+def test_scene_petsc_table_is_used_when_command_line_is_silent(tmp_path):
+    r = sealts("run", str(CONFIGS / "squeeze_plates.toml"), "-o", str(tmp_path), "-ts_view")
+    assert r.returncode == 0, r.stderr
+    assert "type: bdf" in r.stdout
+
+
+def test_diverging_solve_is_one_line_exit_3(tmp_path):
+    r = sealts("run", str(CONFIGS / "slider.toml"), "-o", str(tmp_path), "-snes_max_it", "0",
+               "-snes_rtol", "1e-300", "-snes_atol", "0", "-snes_stol", "0")
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    assert r.stderr.startswith("solve error: steady Newton solve diverged")
+    assert "Traceback" not in r.stderr
+
+
+def test_help_shows_petsc_help(tmp_path):
+    r = sealts("run", "-o", str(tmp_path), "-help")
+    assert "-snes_type" in r.stdout and "-ksp_type" in r.stdout

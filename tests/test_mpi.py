@@ -1,0 +1,52 @@
+"""MPI: mpi4py and PETSc share one MPI library; two ranks reproduce the serial answer."""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from conftest import CONFIGS, ROOT
+
+MPIEXEC = shutil.which("mpiexec")
+
+
+def test_mpi4py_and_petsc_use_the_same_mpi_library():
+    from mpi4py import MPI
+    from petsc4py import PETSc  # noqa: F401  (loads libpetsc and its MPI)
+    libs = set()
+    with open("/proc/self/maps") as f:
+        for line in f:
+            path = line.split()[-1]
+            if "libmpi" in os.path.basename(path) and path.startswith("/"):
+                libs.add(os.path.realpath(path))
+    assert len(libs) == 1, libs
+    assert "MPICH" in MPI.Get_library_version()
+
+
+def _run(n, scene, out, *opts):
+    cmd = [sys.executable, "-m", "sealts", "run", str(CONFIGS / scene), "-o", str(out), *opts]
+    if n > 1:
+        cmd = [MPIEXEC, "-n", str(n)] + cmd
+    r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=600)
+    assert r.returncode == 0, r.stderr
+    p = np.array([float(row["p"]) for row in csv.DictReader(open(out / "profiles.csv"))])
+    return json.loads((out / "summary.json").read_text()), p
+
+
+@pytest.mark.mpi
+@pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
+@pytest.mark.parametrize("scene, opts", [("slider.toml", ()),
+                                         ("slider.toml", ("-snes_type", "newtonls")),
+                                         ("squeeze_plates.toml", ("-ts_adapt_type", "none"))])
+def test_two_ranks_match_one(tmp_path, scene, opts):
+    s1, p1 = _run(1, scene, tmp_path / "serial", *opts)
+    s2, p2 = _run(2, scene, tmp_path / "mpi", *opts)
+    assert s2["ranks"] == 2
+    assert np.abs(p1 - p2).max() <= 1e-9 * np.abs(p1).max()
+    for key in ("p_max", "load", "Q_in", "Q_out"):
+        assert s2["results"][key] == pytest.approx(s1["results"][key], rel=1e-9)
+    assert s2["steps_accepted"] == s1["steps_accepted"]

@@ -1,0 +1,75 @@
+"""Scene files: typed, validated, one-line errors naming the key, exit code 2."""
+import subprocess
+import sys
+import tomllib
+
+import pytest
+
+from conftest import CONFIGS, ROOT
+from sealts.scene import SceneError, default_scene, load_scene, parse_scene
+
+
+def sealts(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "sealts", *args], capture_output=True,
+                          text=True, cwd=cwd or ROOT)
+
+
+@pytest.mark.parametrize("text, message", [
+    ("[fluid]\nviscocity = 1e-8", "unknown key fluid.viscocity; did you mean 'viscosity'?"),
+    ("[fluid]\nviscosity = -1e-8", "fluid.viscosity must be > 0 MPa s (got -1e-08)"),
+    ("[fluid]\nviscosity = 'thin'", "fluid.viscosity must be a number (got 'thin')"),
+    ("[film]\nalpha = 1.5", "film.alpha must be <= 1 (got 1.5)"),
+    ("[film]\nelements = 10.5", "film.elements must be an integer (got 10.5)"),
+    ("[film]\nscheme = 'fem'", "film.scheme must be one of 'fv', 'paper' (got 'fem')"),
+    ("[asperity]\nh_mix = 0.0", "asperity.h_mix must be > 0 mm (got 0)"),
+    ("[gap]\nh_min = 0.001\nsqueeze_velocity = -0.01\n[analysis]\ntype = 'transient'\n"
+     "t_end = 1.0", "gap.squeeze_velocity = -0.01 mm/s closes the gap"),
+    ("[film]\nflow_factors = 'patir-cheng'", "film.rq must be > 0 mm"),
+    ("[film]\nflow_factors = 'patir-cheng'\nrq = 1e-4\ngamma = 2.0", "film.gamma must be one of"),
+    ("[film]\nflow_factors = 'table'\ntable = 'nope.csv'", "film.table: no such file"),
+    ("[analysis]\ntype = 'transient'\nt_end = 1.0\noutput_times = [2.0]",
+     "analysis.output_times has 2 s after analysis.t_end = 1 s"),
+    ("fluid = 3", "fluid must be a table (got 3)"),
+    ("[fluid\n", "not valid TOML"),
+])
+def test_bad_scene_names_the_key(text, message):
+    with pytest.raises(SceneError) as e:
+        parse_scene(text)
+    assert message in str(e.value)
+
+
+def test_cli_bad_scene_one_line_exit_2(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text((CONFIGS / "slider.toml").read_text().replace("viscosity", "viscosty"))
+    r = sealts("run", str(bad), "-o", str(tmp_path / "out"))
+    assert r.returncode == 2
+    assert r.stderr.strip() == "scene error: unknown key fluid.viscosty; did you mean 'viscosity'?"
+    assert "Traceback" not in r.stderr + r.stdout
+    r = sealts("run", str(tmp_path / "missing.toml"))
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "scene file not found" in r.stderr
+
+
+def test_shipped_configs_are_valid():
+    for path in CONFIGS.glob("*.toml"):
+        load_scene(path)
+
+
+def test_embedded_default_is_the_slider_config():
+    a = default_scene()
+    b = load_scene(CONFIGS / "slider.toml")
+    assert a.film == b.film and a.gap == b.gap and a.fluid == b.fluid and a.rod == b.rod
+
+
+def test_petsc_table_values_become_option_strings():
+    s = parse_scene("[petsc]\nts_type = 'bdf'\nts_rtol = 1e-6\nsnes_monitor = ''\n"
+                    "ksp_view = true\n")
+    assert s.petsc_options == {"ts_type": "bdf", "ts_rtol": "1e-06", "snes_monitor": "",
+                               "ksp_view": "true"}
+
+
+def test_keys_lists_every_section():
+    r = sealts("keys")
+    assert r.returncode == 0
+    for key in ("fluid.viscosity", "film.h_floor", "gap.squeeze_velocity", "asperity.p_mix"):
+        assert key in r.stdout
+    assert tomllib.loads((CONFIGS / "slider.toml").read_text())["name"] == "slider"

@@ -1,0 +1,76 @@
+"""Transient film: closed-form squeeze film, exact mass balance, leakage integrated in time."""
+import numpy as np
+import pytest
+from petsc4py import PETSc
+
+from closed_forms import slider_pressure, squeeze_plates_pressure
+from conftest import scene
+from sealts.problem.film_run import FilmModel, solve_steady_film
+from sealts.problem import Problem
+
+
+def run_transient(s, t_end, dt0=1e-3, stops=()):
+    model = FilmModel(s, transient=True)
+    _, u_film, _ = solve_steady_film(s, t=0.0)
+    u0 = model.initial_state(0.0)
+    u0[:model.scheme.size] = u_film[:model.scheme.size]
+    problem = Problem(model.n, [model.term])
+    snaps = {}
+    u = problem.transient(u0, 0.0, t_end, dt0, stops,
+                          on_stop=lambda t, uu: snaps.__setitem__(round(t, 12), uu))
+    return model, u, snaps, problem
+
+
+@pytest.mark.parametrize("scheme", ["fv", "paper"])
+def test_squeeze_plates_pressure_follows_closed_form(scheme):
+    s = scene("squeeze_plates", film={"scheme": scheme, "elements": 100})
+    model, u, snaps, problem = run_transient(s, 1.0, stops=(0.5,))
+    g = s.gap
+    for t, uu in snaps.items():
+        h = g.h_min + g.squeeze_velocity * t
+        exact = squeeze_plates_pressure(model.y, g.length, h, s.fluid.viscosity,
+                                        g.squeeze_velocity)
+        p = model.scheme.pressure(uu)
+        # the pressure is a quadratic in y, which both schemes reproduce to round-off
+        assert np.abs(p - exact).max() < 1e-9 * np.abs(exact).max(), t
+
+
+def test_mass_balance_is_exact():
+    """V_in - V_out equals the change of film volume A int h dy, to solver tolerance."""
+    T = 0.5
+    s = scene("slider", analysis={"type": "transient", "t_end": T}, film={"elements": 200})
+    model, u, snaps, _ = run_transient(s, T, stops=(0.2,))
+    vol_0 = model.area * np.trapezoid(model.gap(0.0)[0], model.y)
+    for t, uu in snaps.items():
+        r = model.scalars(t, uu)
+        vol_t = model.area * np.trapezoid(model.gap(t)[0], model.y)
+        assert r["film_volume"] == pytest.approx(vol_t, rel=1e-12)
+        assert r["V_in"] - r["V_out"] == pytest.approx(vol_t - vol_0, rel=1e-8)
+
+
+def test_leakage_volume_matches_quadrature_of_closed_form_flow():
+    """V_in(T) = int_0^T A q_in(t) dt with q_in from Eq. 43's integration constant, computed
+    independently by Gauss-Legendre quadrature in time. The BDF error shrinks with -ts_rtol."""
+    T = 0.5
+    s = scene("slider", analysis={"type": "transient", "t_end": T}, film={"elements": 800})
+    g = s.gap
+    xg, wg = np.polynomial.legendre.leggauss(40)
+    tq = 0.5 * T * (xg + 1.0)
+    q = [slider_pressure(np.array([0.0]), g.length, g.h_min + g.s_h + g.squeeze_velocity * t,
+                         g.s_h, s.rod.velocity, s.fluid.viscosity, g.squeeze_velocity)[1]
+         for t in tq]
+    v_exact = 0.5 * T * np.dot(wg, q) * g.width
+    errs = []
+    opts = PETSc.Options()
+    for rtol in (1e-4, 1e-6):
+        opts["ts_rtol"] = rtol
+        opts["ts_atol"] = rtol * 1e-2
+        try:
+            model, u, _, _ = run_transient(s, T)
+        finally:
+            del opts["ts_rtol"]
+            del opts["ts_atol"]
+        errs.append(abs(u[-2] - v_exact) / abs(v_exact))
+    # the remaining error at tight tolerance is the O(dy^2) spatial error of Q_in
+    assert errs[1] < 2e-5, errs
+    assert errs[1] <= errs[0], errs
