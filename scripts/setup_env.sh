@@ -48,7 +48,7 @@ fi
 py="$venv/bin/python"
 pipq() { "$py" -m pip --disable-pip-version-check -q "$@"; }
 
-pipq install "pip>=24" "setuptools>=70" wheel "cython>=3" "numpy>=1.26"
+pipq install "pip>=24" "setuptools>=77" wheel "cython>=3" "numpy>=1.26"
 
 # --- 3. PETSc, built once -----------------------------------------------------------------
 # pip's wheel cache keys the petsc wheel by version only, so the options it was built with are
@@ -65,7 +65,7 @@ EOF
 }
 if ! "$py" -c "import petsc" 2>/dev/null || ! petsc_opts_ok; then
     export PETSC_CONFIGURE_OPTIONS="$PETSC_OPTS"
-    say "installing petsc==$PETSC_VERSION (first build compiles for ~10 min)"
+    say "installing petsc==$PETSC_VERSION (from the wheel cache, or a ~10 min build)"
     pipq install --no-build-isolation "petsc==$PETSC_VERSION"
     if ! petsc_opts_ok; then
         say "cached petsc wheel was built with other options: rebuilding without the cache"
@@ -77,7 +77,7 @@ PETSC_DIR=$("$py" -c "import petsc; print(petsc.get_petsc_dir())")
 unset PETSC_ARCH
 
 if ! "$py" -c "import petsc4py" 2>/dev/null; then
-    say "installing petsc4py==$PETSC_VERSION against $PETSC_DIR (first build ~8 min)"
+    say "installing petsc4py==$PETSC_VERSION against $PETSC_DIR (from the wheel cache, or a ~8 min build)"
     pipq install --no-build-isolation "petsc4py==$PETSC_VERSION"
 fi
 # petsc4py records the absolute PETSc path of the venv it was first built in (RUNPATH and

@@ -65,7 +65,7 @@ def run(args):
         writer.close()
     if comm.getRank() == 0 and scene.output.progress:
         r = summary["results"]
-        print(f"{scene.name}: p_max = {r['p_max']:.6g} MPa at y = {r['y_at_p_max']:.4g} mm, "
+        print(f"{scene.name} at t = {r['t']:.6g} s: p_max = {r['p_max']:.6g} MPa at y = {r['y_at_p_max']:.4g} mm, "
               f"load = {r['load']:.6g} N, Q_out = {r['Q_out']:.6g} mm^3/s, "
               f"friction = {r['friction_fluid']:.6g} N  "
               f"({summary['wall_time_s']:.2f} s wall)")

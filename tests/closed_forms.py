@@ -38,3 +38,14 @@ def slider_pressure(y, l, h1, s_h, v, eta, hd):
 def squeeze_plates_pressure(y, l, h, eta, hd):
     """Parallel plates approaching at hd < 0, p(0) = p(l) = 0: p = -6 eta hd y (l - y) / h^3."""
     return -6.0 * eta * hd * y * (l - y) / h**3
+
+
+def squeeze_plates_volumes(T, l, h0, hd, v, area):
+    """Leakage volumes through both ends of sliding, approaching parallel plates after T.
+
+    By symmetry the pressure gradient vanishes mid-film, where q = (v/2) h; mass conservation
+    dq/dy = -hd then gives q(0) = (v/2) h + hd l/2 and q(l) = (v/2) h - hd l/2, with
+    h = h0 + hd t. Integrated over [0, T]:
+    """
+    couette = 0.5 * v * (h0 * T + 0.5 * hd * T**2)
+    return area * (couette + 0.5 * hd * l * T), area * (couette - 0.5 * hd * l * T)

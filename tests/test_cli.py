@@ -4,8 +4,10 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
+from closed_forms import slider_pressure
 from conftest import CONFIGS, ROOT
 
 
@@ -19,20 +21,30 @@ def test_default_run_writes_the_output_contract(tmp_path):
     r = sealts("run", "-o", str(out))
     assert r.returncode == 0, r.stderr
     summary = json.loads((out / "summary.json").read_text())
-    res = summary["results"]
+    res = summary["results_t0"]
     assert summary["scene"] == "slider"
     for key in ("wall_time_s", "steps_accepted", "steps_rejected", "newton_iterations",
                 "linear_iterations"):
         assert key in summary
     assert res["p_max"] == pytest.approx(2.75, rel=1e-4)
     assert res["y_at_p_max"] == pytest.approx(7.5, abs=2e-3)
-    for key in ("load", "Q_in", "Q_out", "friction_fluid"):
+    for key in ("load", "Q_in", "Q_out", "friction_fluid", "V_in", "V_out"):
         assert key in res
+    # at t_end = 0.5 s the gap has closed by 0.5 um: closed form with the shifted gap
+    end = summary["results"]
+    y = np.linspace(0.0, 10.0, 100001)
+    p_end, _ = slider_pressure(y, 10.0, 0.0025, 0.002, 100.0, 1e-8, -0.001)
+    assert end["t"] == pytest.approx(0.5)
+    assert end["p_max"] == pytest.approx(p_end.max(), rel=1e-4)
     with open(out / "profiles.csv") as f:
         rows = list(csv.DictReader(f))
     assert list(rows[0]) == ["t", "y", "h", "p", "tau"]
-    assert len(rows) == 1001
-    assert (out / "profiles.png").stat().st_size > 10_000
+    assert sorted({float(r["t"]) for r in rows}) == [0.0, 0.25, 0.5]
+    assert len(rows) == 3 * 1001
+    series = list(csv.DictReader(open(out / "series.csv")))
+    assert len(series) == summary["steps_accepted"] + 1  # plus the initial state
+    for name in ("profiles.png", "series.png"):
+        assert (out / name).stat().st_size > 10_000
 
 
 def test_command_line_petsc_options_reach_the_solvers(tmp_path):

@@ -74,3 +74,27 @@ def test_paper_scheme_integration_constants():
     c0, y0 = u[model.scheme.n], u[model.scheme.n + 1]
     assert abs(c0) < 1e-12
     assert y0 == pytest.approx(7.5, abs=1e-3)
+
+
+@pytest.mark.parametrize("scheme", ["fv", "paper"])
+def test_shear_stress_matches_closed_form(scheme):
+    """Eq. 32 with the exact gradient h^3/(12 eta) p' = (v/2) h + hd y - q0."""
+    model, u = solve(scheme, 1000)
+    prof = model.profile(0.0, u)
+    y = model.y
+    _, q0 = slider_pressure(np.array([0.0]), L, H1, SH, V, ETA, HD)
+    h = H1 - SH / L * y
+    dpdy = 12 * ETA * (0.5 * V * h + HD * y - q0) / h**3
+    tau = ETA * V / h - 0.5 * h * dpdy
+    assert np.abs(prof["tau"] - tau).max() < 1e-4 * np.abs(tau).max()
+
+
+def test_axisymmetric_area_is_rod_circumference():
+    """Eq. 31: forces and flows scale with 2 pi r instead of the planar width."""
+    planar = solve_steady_film(scene("slider"))
+    axi = solve_steady_film(scene("slider", gap={"symmetry": "axisymmetric"},
+                                  rod={"radius": 25.0}))
+    a, b = planar[0].scalars(0.0, planar[1]), axi[0].scalars(0.0, axi[1])
+    for key in ("load", "Q_in", "Q_out", "friction_fluid"):
+        assert b[key] == pytest.approx(2 * np.pi * 25.0 * a[key], rel=1e-12)
+    assert b["p_max"] == pytest.approx(a["p_max"], rel=1e-12)

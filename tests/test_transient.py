@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from petsc4py import PETSc
 
-from closed_forms import slider_pressure, squeeze_plates_pressure
+from closed_forms import slider_pressure, squeeze_plates_pressure, squeeze_plates_volumes
 from conftest import scene
 from sealts.problem.film_run import FilmModel, solve_steady_film
 from sealts.problem import Problem
@@ -33,6 +33,11 @@ def test_squeeze_plates_pressure_follows_closed_form(scheme):
         p = model.scheme.pressure(uu)
         # the pressure is a quadratic in y, which both schemes reproduce to round-off
         assert np.abs(p - exact).max() < 1e-9 * np.abs(exact).max(), t
+    # q is linear in y and t here, so the volumes are exact up to the TS tolerance
+    v_in, v_out = squeeze_plates_volumes(1.0, g.length, g.h_min, g.squeeze_velocity,
+                                         s.rod.velocity, model.area)
+    assert u[-2] == pytest.approx(v_in, rel=1e-7)
+    assert u[-1] == pytest.approx(v_out, rel=1e-7)
 
 
 def test_mass_balance_is_exact():
@@ -74,3 +79,44 @@ def test_leakage_volume_matches_quadrature_of_closed_form_flow():
     # the remaining error at tight tolerance is the O(dy^2) spatial error of Q_in
     assert errs[1] < 2e-5, errs
     assert errs[1] <= errs[0], errs
+
+
+class RefusesLongSteps:
+    """A test term that reports a non-physical state (NaN) for steps longer than dt_max,
+    as a real term does for an inverted element: TS must retry smaller, never accept."""
+
+    def __init__(self, dt_max):
+        self.rows = self.cols = np.zeros(0, np.int64)
+        self.dt_max, self.t_prev = dt_max, 0.0
+
+    def add_residual(self, t, u, udot, f):
+        if t - self.t_prev > self.dt_max * (1 + 1e-12):
+            f[0] = np.nan
+
+    def jacobian_values(self, t, u, udot, shift):
+        return np.zeros(0)
+
+
+def test_failed_steps_are_retried_smaller():
+    s = scene("squeeze_plates", film={"elements": 50})
+    model = FilmModel(s, transient=True)
+    _, u_film, _ = solve_steady_film(s, t=0.0)
+    u0 = model.initial_state(0.0)
+    u0[:model.scheme.size] = u_film[:model.scheme.size]
+    guard = RefusesLongSteps(0.05)
+    problem = Problem(model.n, [model.term, guard])
+    times = [0.0]
+
+    def on_step(ts, step, t, u):
+        times.append(t)
+        guard.t_prev = t
+
+    u = problem.transient(u0, 0.0, 1.0, 0.2, on_step=on_step)
+    assert problem.counters.rejected >= 1
+    assert times[-1] == pytest.approx(1.0)
+    assert np.diff(times[1:]).max() <= 0.05 * (1 + 1e-9)
+    # and the accepted solution is still right
+    g = s.gap
+    v_in, _ = squeeze_plates_volumes(1.0, g.length, g.h_min, g.squeeze_velocity,
+                                     s.rod.velocity, model.area)
+    assert u[-2] == pytest.approx(v_in, rel=1e-6)

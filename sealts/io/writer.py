@@ -1,7 +1,8 @@
 """Run output, written as the run goes so that an interrupted run keeps what it wrote.
 
 OUTDIR/
-  summary.json   scene, wall time, step and iteration counts, key results (units inside)
+  summary.json   scene, wall time, step and iteration counts, key results at the end
+                 (``results``) and, for transient runs, at t = 0 (``results_t0``)
   profiles.csv   long format: t, y, h, p, tau [, p_asperity, tau_solid]  (mm, MPa, s)
   series.csv     transient runs: one row per accepted step
   profiles.png   film thickness (um) and pressure along y at each output time

@@ -140,6 +140,7 @@ def run_film(scene, writer, comm):
         u0[:model.scheme.size] = u_film[:model.scheme.size]
         problem = Problem(model.n, [model.term], comm=comm)
         writer.profile(0.0, model.profile(0.0, u0))
+        results_t0 = model.scalars(0.0, u0)
         state = {"newton": 0}
 
         def on_step(ts, step, t, u):
@@ -176,5 +177,7 @@ def run_film(scene, writer, comm):
         "units": {"length": "mm", "pressure": "MPa", "force": "N", "time": "s",
                   "flow": "mm^3/s", "volume": "mm^3"},
     }
+    if a.type == "transient":
+        summary["results_t0"] = results_t0
     writer.summary(summary)
     return summary

@@ -143,6 +143,7 @@ class Problem:
         pc = ksp.getPC()
         if self.comm.getSize() == 1:
             pc.setType(PETSc.PC.Type.LU)
+            pc.setFactorSolverType("umfpack")  # 2x PETSc's LU at 80k unknowns, docs/petsc-build.md
         else:
             pc.setType(PETSc.PC.Type.REDUNDANT)
 
@@ -220,8 +221,12 @@ class Problem:
         ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0);
         ``on_stop(t, u)`` at each time in ``stops`` (hit exactly) and at t_end.
         """
+        last = [None]
+
         def monitor(ts, step, t, X):
-            if on_step is not None:
+            # TS calls its monitor at the start of every solve(): report each state once
+            if on_step is not None and t != last[0]:
+                last[0] = t
                 on_step(ts, step, t, self.gather(X).copy())
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor)
