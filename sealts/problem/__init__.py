@@ -1,4 +1,4 @@
 """The PETSc problem: one DAE F(t, U, U') = 0 summed from pluggable physics terms."""
-from .problem import Problem, SolveError, Term
+from .problem import Constraints, Problem, SolveError, Term
 
-__all__ = ["Problem", "SolveError", "Term"]
+__all__ = ["Constraints", "Problem", "SolveError", "Term"]

@@ -13,7 +13,9 @@ and a steady scene solves F(t, U, 0) = 0 with SNES. Each physics term supplies
 
 The Problem concatenates the patterns once (``setPreallocationCOO``) and, per Newton step,
 concatenates the values (``setValuesCOO``). Terms never see PETSc objects, so adding a term
-touches no other. ``setFromOptions()`` is called last, so the command line wins over the
+touches no other. Dirichlet constraints (``Constraints``: dofs and their values at time t)
+replace whole rows after the terms are summed, u_i - g_i(t) = 0, so terms need not know
+about them. ``setFromOptions()`` is called last, so the command line wins over the
 defaults set here and over a scene's ``[petsc]`` table.
 
 Parallel runs: PETSc distributes rows of U, F and J by contiguous blocks. Every rank gathers
@@ -44,6 +46,18 @@ class Term:
         raise NotImplementedError
 
 
+class Constraints:
+    """Prescribed unknowns u[dofs] = values(t)."""
+
+    def __init__(self, dofs, values):
+        self.dofs = np.asarray(dofs, np.int64)
+        self._values = values
+
+    def values(self, t):
+        v = self._values(t) if callable(self._values) else self._values
+        return np.broadcast_to(np.asarray(v, float), self.dofs.shape)
+
+
 @dataclass
 class Counters:
     steps: int = 0
@@ -58,10 +72,16 @@ class Counters:
 class Problem:
     """A DAE assembled from terms, solved with PETSc TS (transient) or SNES (steady)."""
 
-    def __init__(self, n, terms, comm=None, prefix=None):
+    def __init__(self, n, terms, comm=None, prefix=None, constraints=None, linesearch="bt"):
+        """``linesearch`` is the default SNES line search (the command line overrides it):
+        ``bt`` for the film; ``basic`` for near-incompressible solids, where the residual
+        norm is a poor merit function. Measured on a bent block with K/G ~ 940: basic 6
+        Newton iterations, cp 12, l2 20, bt stalls at 50 (docs/design.md)."""
+        self.linesearch = linesearch
         self.comm = comm or PETSc.COMM_WORLD
         self.n = int(n)
         self.terms = list(terms)
+        self.constraints = constraints
         self.prefix = prefix
         self.counters = Counters()
 
@@ -72,6 +92,12 @@ class Problem:
 
         rows = np.concatenate([np.asarray(t.rows, PETSc.IntType) for t in self.terms])
         cols = np.concatenate([np.asarray(t.cols, PETSc.IntType) for t in self.terms])
+        if constraints is not None:
+            self._fixed_entries = np.isin(rows, constraints.dofs)
+            fixed = constraints.dofs.astype(PETSc.IntType)
+            rows = np.concatenate([rows, fixed])
+            cols = np.concatenate([cols, fixed])
+        self._rows, self._cols = rows, cols
         self._mine = (rows >= self.rstart) & (rows < self.rend)
         self.J = PETSc.Mat().create(comm=self.comm)
         self.J.setSizes(((self.rend - self.rstart, self.n), (self.rend - self.rstart, self.n)))
@@ -91,18 +117,23 @@ class Problem:
         f = np.zeros(self.n)
         for term in self.terms:
             term.add_residual(t, u, udot, f)
+        c = self.constraints
+        if c is not None:
+            f[c.dofs] = u[c.dofs] - c.values(t)
         return f
 
     def jacobian_values(self, t, u, udot, shift):
-        return np.concatenate([np.asarray(term.jacobian_values(t, u, udot, shift), float)
+        vals = np.concatenate([np.asarray(term.jacobian_values(t, u, udot, shift), float)
                                for term in self.terms])
+        if self.constraints is not None:
+            vals[self._fixed_entries] = 0.0
+            vals = np.concatenate([vals, np.ones(self.constraints.dofs.size)])
+        return vals
 
     def jacobian_dense(self, t, u, udot, shift):
         """Assembled Jacobian as a dense array (serial tests and diagnostics only)."""
-        rows = np.concatenate([t_.rows for t_ in self.terms])
-        cols = np.concatenate([t_.cols for t_ in self.terms])
         a = np.zeros((self.n, self.n))
-        np.add.at(a, (rows, cols), self.jacobian_values(t, u, udot, shift))
+        np.add.at(a, (self._rows, self._cols), self.jacobian_values(t, u, udot, shift))
         return a
 
     # ---- PETSc callbacks -------------------------------------------------------------------
@@ -160,7 +191,7 @@ class Problem:
         snes.setFunction(self.snes_function, self.U.duplicate())
         snes.setJacobian(self.snes_jacobian, self.J)
         snes.setType(PETSc.SNES.Type.NEWTONLS)
-        snes.getLineSearch().setType(PETSc.SNESLineSearch.Type.BT)
+        snes.getLineSearch().setType(self.linesearch)
         snes.setTolerances(rtol=1e-10, atol=1e-12, max_it=50)
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
@@ -185,7 +216,7 @@ class Problem:
         self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
         snes = ts.getSNES()
         snes.setType(PETSc.SNES.Type.NEWTONLS)
-        snes.getLineSearch().setType(PETSc.SNESLineSearch.Type.BT)
+        snes.getLineSearch().setType(self.linesearch)
         snes.setTolerances(rtol=1e-10, atol=1e-12, max_it=25)
         self._default_linear_solver(snes.getKSP())
         if monitor is not None:

@@ -1,0 +1,1 @@
+"""Seal cross-section meshes: structured quads for verification, gmsh for seal geometries."""

@@ -1,0 +1,164 @@
+"""Four-node quadrilaterals with constant pressure (Q1/P0 mean dilatation), finite strain.
+
+Total Lagrangian, axisymmetric (r, z) or plane strain (x, y). The element energy is
+
+    W_e(u) = sum_g w_g psi_iso(F_g) + V_e U(theta_e),
+    theta_e = v_e / V_e,  v_e = sum_g w_g J_g,  V_e = sum_g w_g,
+
+the Simo-Taylor-Pister mean-dilatation form of the u-p (hybrid) element with the element
+pressure p_e = U'(theta_e) condensed out; the family ABAQUS calls CAX4H/CPE4H. It does not
+lock for K/G ~ 1000 (rubber: C10 = 1.064 MPa, D1 = 0.001 mm^2/N). 2x2 Gauss points,
+w_g = det(J0) (times 2 pi R_g in axisymmetry, so forces are totals over the circumference;
+per mm of depth in plane strain).
+
+Since f = (F11, F12, F21, F22, F33) is linear in the element displacements, f = f0 + B u_e,
+the residual and consistent tangent are exact:
+
+    r_e = sum_g w_g B_g^T P_g + U'(theta) sum_g w_g B_g^T dJ_g,
+    K_e = sum_g w_g B_g^T (A_g + U'(theta) H_J,g) B_g + U''(theta)/V_e b b^T,
+    b = sum_g w_g B_g^T dJ_g.
+
+Element dofs are ordered (u_r, u_z) per node, nodes counter-clockwise.
+"""
+import math
+
+import numba
+import numpy as np
+
+from .neo_hooke import det_and_derivatives, isochoric, volumetric
+
+_G = 1.0 / math.sqrt(3.0)
+GAUSS = np.array([[-_G, -_G], [_G, -_G], [_G, _G], [-_G, _G]])
+_XI = np.array([-1.0, 1.0, 1.0, -1.0])
+_ETA = np.array([-1.0, -1.0, 1.0, 1.0])
+
+
+@numba.njit(cache=True, inline="always")
+def _bt_v(B, v, out, scale):
+    """out += scale * B^T v  (B: 5x8)."""
+    for j in range(8):
+        acc = 0.0
+        for i in range(5):
+            acc += B[i, j] * v[i]
+        out[j] += scale * acc
+
+
+@numba.njit(cache=True, inline="always")
+def _bt_a_b(B, A, out, scale):
+    """out += scale * B^T A B  (B: 5x8, A: 5x5)."""
+    AB = np.zeros((5, 8))
+    for i in range(5):
+        for k in range(5):
+            a = A[i, k]
+            if a != 0.0:
+                for j in range(8):
+                    AB[i, j] += a * B[k, j]
+    for j in range(8):
+        for l in range(8):
+            acc = 0.0
+            for i in range(5):
+                acc += B[i, j] * AB[i, l]
+            out[j, l] += scale * acc
+
+
+@numba.njit(cache=True)
+def gauss_operators(X, conn, axisym):
+    """Per element and Gauss point: weight w (ne, 4), B (ne, 4, 5, 8), radius R (ne, 4)."""
+    ne = conn.shape[0]
+    W = np.empty((ne, 4))
+    B = np.zeros((ne, 4, 5, 8))
+    R = np.empty((ne, 4))
+    for e in range(ne):
+        xe = X[conn[e]]
+        for g in range(4):
+            xi, et = GAUSS[g, 0], GAUSS[g, 1]
+            N = 0.25 * (1.0 + _XI * xi) * (1.0 + _ETA * et)
+            dNxi = 0.25 * _XI * (1.0 + _ETA * et)
+            dNet = 0.25 * _ETA * (1.0 + _XI * xi)
+            j11 = j12 = j21 = j22 = r = 0.0
+            for a in range(4):
+                j11 += dNxi[a] * xe[a, 0]
+                j12 += dNxi[a] * xe[a, 1]
+                j21 += dNet[a] * xe[a, 0]
+                j22 += dNet[a] * xe[a, 1]
+                r += N[a] * xe[a, 0]
+            det = j11 * j22 - j12 * j21
+            dN1 = (j22 * dNxi - j12 * dNet) / det   # d/dX1 (r or x)
+            dN2 = (-j21 * dNxi + j11 * dNet) / det  # d/dX2 (z or y)
+            R[e, g] = r
+            W[e, g] = det * (2.0 * math.pi * r if axisym else 1.0)
+            for a in range(4):
+                B[e, g, 0, 2 * a] = dN1[a]
+                B[e, g, 1, 2 * a] = dN2[a]
+                B[e, g, 2, 2 * a + 1] = dN1[a]
+                B[e, g, 3, 2 * a + 1] = dN2[a]
+                if axisym:
+                    B[e, g, 4, 2 * a] = N[a] / r
+    return W, B, R
+
+
+@numba.njit(cache=True)
+def element_forces(u, conn, W, B, c10, d1, j_th):
+    """Internal forces r (ne, 8), tangents K (ne, 8, 8) and energy of all elements.
+
+    Returns also the Gauss-point f (ne, 4, 5), P (ne, 4, 5) and element pressure U'(theta)
+    and dilatation theta for output and checks. A non-positive J anywhere gives
+    ``ok = False`` (inverted element): the caller rejects the Newton step.
+    """
+    ne = conn.shape[0]
+    r = np.zeros((ne, 8))
+    K = np.zeros((ne, 8, 8))
+    f_all = np.empty((ne, 4, 5))
+    P_all = np.empty((ne, 4, 5))
+    p_el = np.empty(ne)
+    th_el = np.empty(ne)
+    energy = 0.0
+    ok = True
+    eye = np.array([1.0, 0.0, 0.0, 1.0, 1.0])
+    for e in range(ne):
+        ue = np.empty(8)
+        for a in range(4):
+            ue[2 * a] = u[2 * conn[e, a]]
+            ue[2 * a + 1] = u[2 * conn[e, a] + 1]
+        V = 0.0
+        v = 0.0
+        b = np.zeros(8)
+        HJs = np.empty((4, 5, 5))
+        for g in range(4):
+            Bg = B[e, g]
+            f = eye.copy()
+            for i in range(5):
+                for j in range(8):
+                    f[i] += Bg[i, j] * ue[j]
+            J, dJ, HJ = det_and_derivatives(f)
+            if J <= 0.0:
+                ok = False
+                J = 1e-300
+            psi, P, A = isochoric(f, c10)
+            w = W[e, g]
+            energy += w * psi
+            _bt_v(Bg, P, r[e], w)
+            _bt_a_b(Bg, A, K[e], w)
+            _bt_v(Bg, dJ, b, w)
+            HJs[g] = HJ
+            V += w
+            v += w * J
+            f_all[e, g] = f
+            P_all[e, g] = P
+        theta = v / V
+        U, dU, d2U = volumetric(theta, d1, j_th)
+        energy += V * U
+        r[e] += dU * b
+        for g in range(4):
+            _bt_a_b(B[e, g], HJs[g], K[e], W[e, g] * dU)
+        for j in range(8):
+            for l in range(8):
+                K[e, j, l] += d2U / V * b[j] * b[l]
+        p_el[e] = dU
+        th_el[e] = theta
+    return r, K, energy, ok, f_all, P_all, p_el, th_el
+
+
+def element_dofs(conn):
+    """Global dof numbers (ne, 8) of each element, (u_r, u_z) per node."""
+    return np.stack([2 * conn, 2 * conn + 1], 2).reshape(conn.shape[0], 8)

@@ -1,0 +1,76 @@
+"""The seal body as a physics term of :class:`sealts.problem.Problem`.
+
+Unknowns: nodal displacements (u_r, u_z) (mm) at ``offset``, node by node. Residual: the
+internal forces of the Q1/P0 elements (:mod:`sealts.solid.q1p0`) in N (totals over the
+circumference in axisymmetry, per mm of depth in plane strain). External loads and contacts
+are separate terms. An inverted element (J <= 0 at a Gauss point) makes the residual NaN, so
+SNES fails and TS retries the step smaller; no such state is ever accepted.
+"""
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..problem import Term
+from .q1p0 import element_dofs, element_forces, gauss_operators
+
+
+@dataclass(frozen=True)
+class NeoHooke:
+    """Compressible Neo-Hooke (Eq. 1-5): C10 (MPa), D1 (mm^2/N), thermal expansion."""
+
+    c10: float
+    d1: float
+    alpha_th: float = 0.0   # 1/K
+    d_theta: float = 0.0    # K, temperature above the reference
+
+    @property
+    def j_th(self):
+        return (1.0 + self.alpha_th * self.d_theta) ** 3
+
+    @property
+    def shear_modulus(self):
+        return 2.0 * self.c10
+
+    @property
+    def bulk_modulus(self):
+        return 2.0 / self.d1
+
+
+class SolidTerm(Term):
+    def __init__(self, X, conn, material, axisym, offset=0):
+        self.X = np.ascontiguousarray(X, float)
+        self.conn = np.ascontiguousarray(conn, np.int64)
+        self.material, self.axisym, self.off = material, bool(axisym), offset
+        self.nn = self.X.shape[0]
+        self.W, self.B, self.R = gauss_operators(self.X, self.conn, self.axisym)
+        self.dofs = element_dofs(self.conn) + offset
+        self.rows = np.repeat(self.dofs, 8, axis=1).ravel()
+        self.cols = np.tile(self.dofs, (1, 8)).ravel()
+        self._cache_key = None
+
+    def _evaluate(self, u):
+        key = (u.ctypes.data, hash(u[self.off:self.off + 2 * self.nn].tobytes()))
+        if key != self._cache_key:
+            m = self.material
+            us = np.ascontiguousarray(u[self.off:self.off + 2 * self.nn])
+            self._out = element_forces(us, self.conn, self.W, self.B, m.c10, m.d1, m.j_th)
+            self._cache_key = key
+        return self._out
+
+    def add_residual(self, t, u, udot, f):
+        r, _, _, ok, *_ = self._evaluate(u)
+        if not ok:
+            f[:] = np.nan
+            return
+        f += np.bincount(self.dofs.ravel(), r.ravel(), minlength=f.size)
+
+    def jacobian_values(self, t, u, udot, shift):
+        return self._evaluate(u)[1].ravel()
+
+    def energy(self, u):
+        return self._evaluate(u)[2]
+
+    def state(self, u):
+        """Gauss-point f, P, element pressure term U'(theta) and dilatation theta."""
+        _, _, _, _, f, P, p, th = self._evaluate(u)
+        return f, P, p, th
