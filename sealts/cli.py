@@ -20,23 +20,40 @@ USAGE = """usage: sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]
 
 
 def _split_run_args(args):
+    """(scene, outdir, PETSc args). The scene is the first argument, or the one ending in
+    .toml wherever it stands; other tokens that are not options are values of the PETSc
+    option before them."""
     scene, outdir, petsc = None, None, []
     i = 0
-    if args and not args[0].startswith("-"):
-        scene, i = args[0], 1
     while i < len(args):
         a = args[i]
         if a in ("-o", "--output"):
-            if i + 1 >= len(args):
+            if i + 1 >= len(args) or args[i + 1].startswith("-"):
                 raise SceneError(f"{a} needs a directory")
             outdir, i = args[i + 1], i + 2
             continue
         if a.startswith("--output="):
             outdir = a.split("=", 1)[1]
+        elif (a.endswith(".toml") or i == 0) and not a.startswith("-"):
+            if scene is not None:
+                raise SceneError(f"two scene files given: {scene} and {a}")
+            scene = a
+        elif not a.startswith("-") and (not petsc or not petsc[-1].startswith("-")):
+            raise SceneError(f"unexpected argument {a!r} (a scene file ends in .toml)")
         else:
             petsc.append(a)
         i += 1
     return scene, outdir, petsc
+
+
+def _prepare_outdir(out):
+    """Create the output directory (every rank checks, so all fail alike under MPI)."""
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise SceneError(f"output directory {out} cannot be created ({e.strerror})") from None
+    if not out.is_dir():
+        raise SceneError(f"output directory {out} is not a directory")
 
 
 def _init_petsc(argv, scene):
@@ -53,9 +70,10 @@ def _init_petsc(argv, scene):
 def run(args):
     scene_path, outdir, petsc_args = _split_run_args(args)
     scene = load_scene(scene_path) if scene_path else default_scene()
+    out = Path(outdir) if outdir else Path("results") / scene.name
+    _prepare_outdir(out)
     PETSc = _init_petsc(petsc_args, scene)
     comm = PETSc.COMM_WORLD
-    out = Path(outdir) if outdir else Path("results") / scene.name
     from .io import Writer
     from .problem.film_run import run_film
     writer = Writer(out, comm, plots=scene.output.plot)

@@ -28,5 +28,3 @@ Scaling of the discrete system, so that PETSc tolerances mean something:
 Film thickness is printed in micrometres (um) in progress output and plots, because that is
 what a seal engineer reads; files keep mm so that every column shares one unit system.
 """
-
-MM_PER_UM = 1e-3

@@ -18,8 +18,18 @@ with C fixed by p(l) = 0. For linear h these integrals are elementary:
 import numpy as np
 
 
-def slider_pressure(y, l, h1, s_h, v, eta, hd):
-    """Pressure (MPa) of the rigid slider bearing and its inlet flow q(0) (mm^2/s)."""
+def slider_pressure(y, l, h1, s_h, v, eta, hd, phi_p=1.0, couette=1.0, tilt=0.0):
+    """Pressure (MPa) of the rigid slider bearing and its inlet flow q(0) (mm^2/s).
+
+    Generalised for the tests of flow factors and non-uniform squeeze:
+    * phi_p: a constant pressure flow factor, k = phi_p h^3 / (12 eta);
+    * couette: the factor (1 -+ Rq b) that a shear flow factor Phi_s = a + b h puts on the
+      Couette term (its constant part a only shifts the integration constant);
+    * tilt: a squeeze rate linear in y, dh/dt = hd + tilt y, whose once-integrated form is
+      hd y + tilt y^2 / 2, which needs Fyy3 = int_0^y s^2 h^-3 ds
+      = (1/m^2) [ ln(h/h1)/m - 2 h1 F2 + h1^2 F3 ].
+    q(0) is returned for phi_p = couette = 1 only (the flow through y = 0 is then -C).
+    """
     m = -s_h / l
 
     def integrals(yy):
@@ -27,12 +37,24 @@ def slider_pressure(y, l, h1, s_h, v, eta, hd):
         f2 = (1.0 / h1 - 1.0 / h) / m
         f3 = (1.0 / h1**2 - 1.0 / h**2) / (2.0 * m)
         fy3 = (f2 - h1 * f3) / m
-        return f2, f3, fy3
+        fyy3 = (np.log(h / h1) / m - 2 * h1 * f2 + h1**2 * f3) / m**2
+        return f2, f3, fy3, fyy3
 
-    f2l, f3l, fy3l = integrals(np.float64(l))
-    c = -(0.5 * v * f2l + hd * fy3l) / f3l
-    f2, f3, fy3 = integrals(np.asarray(y, float))
-    return 12.0 * eta * (0.5 * v * f2 + hd * fy3 + c * f3), -c
+    def bracket(yy, c):
+        f2, f3, fy3, fyy3 = integrals(yy)
+        return 0.5 * v * couette * f2 + hd * fy3 + 0.5 * tilt * fyy3 + c * f3
+
+    f2l, f3l, _, _ = integrals(np.float64(l))
+    c = -bracket(np.float64(l), 0.0) / f3l
+    return 12.0 * eta / phi_p * bracket(np.asarray(y, float), c), -c
+
+
+def hydrostatic_pressure(y, l, h1, s_h, p_in, p_out):
+    """Pure pressure flow (v = 0, no squeeze) through the tapered gap: q is constant, so
+    p = p_in - (p_in - p_out) F3(y) / F3(l)."""
+    m = -s_h / l
+    f3 = lambda yy: (1.0 / h1**2 - 1.0 / (h1 + m * yy) ** 2) / (2.0 * m)
+    return p_in - (p_in - p_out) * f3(np.asarray(y, float)) / f3(l)
 
 
 def squeeze_plates_pressure(y, l, h, eta, hd):

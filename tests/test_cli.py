@@ -76,4 +76,5 @@ def test_diverging_solve_is_one_line_exit_3(tmp_path):
 
 def test_help_shows_petsc_help(tmp_path):
     r = sealts("run", "-o", str(tmp_path), "-help")
+    assert r.returncode == 0, r.stderr
     assert "-snes_type" in r.stdout and "-ksp_type" in r.stdout

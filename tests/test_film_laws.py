@@ -103,3 +103,18 @@ def test_regularised_gap():
     assert h_eff(3e-5, hf) == (3e-5, 1.0)
     a, b = h_eff(2 * hf - 1e-15, hf), h_eff(2 * hf + 1e-15, hf)
     assert a[0] == pytest.approx(b[0]) and a[1] == pytest.approx(b[1])
+
+
+def test_shear_stress_squeeze_gradient_term():
+    """Eq. 32-33: with v = 0 and no pressure gradient only -eta d(dh/dt)/dy remains. For a
+    quadratic dh/dt = b y^2 on a uniform grid, beta = 0.5 (central difference) is exact at
+    interior nodes; beta = 1 (backward) is off by b dy."""
+    from sealts.film.quantities import shear_stress
+    y = np.linspace(0.0, 1.0, 11)
+    b, eta = 3.0, 2.0
+    hd = b * y**2
+    h = np.full_like(y, 1e-3)
+    tau = shear_stress(y, h, hd, np.zeros_like(y), 0.0, eta, 1e-6, 0.5)
+    assert np.allclose(tau[1:-1], -eta * 2 * b * y[1:-1], rtol=1e-12)
+    tau_b = shear_stress(y, h, hd, np.zeros_like(y), 0.0, eta, 1e-6, 1.0)
+    assert np.allclose(tau_b[1:-1], -eta * (2 * b * y[1:-1] - b * 0.1), rtol=1e-12)

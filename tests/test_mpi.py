@@ -50,3 +50,15 @@ def test_two_ranks_match_one(tmp_path, scene, opts):
     for key in ("p_max", "load", "Q_in", "Q_out"):
         assert s2["results"][key] == pytest.approx(s1["results"][key], rel=1e-9)
     assert s2["steps_accepted"] == s1["steps_accepted"]
+
+
+@pytest.mark.mpi
+@pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
+def test_user_error_under_mpi_exits_on_every_rank(tmp_path):
+    """A bad output directory fails on all ranks alike: exit 2, no hang."""
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    r = subprocess.run([MPIEXEC, "-n", "2", sys.executable, "-m", "sealts", "run", "-o",
+                        str(blocker)], capture_output=True, text=True, cwd=ROOT, timeout=60)
+    assert r.returncode == 2
+    assert r.stderr.count("output directory") == 2

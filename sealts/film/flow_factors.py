@@ -72,8 +72,9 @@ def tabulated_gamma(gamma):
 class FlowFactors:
     """Flow-factor model packed as plain arrays, so numba kernels can evaluate it.
 
-    ``par`` = [Rq, C, r, A1, a1, a2, a3, A2, longitudinal, H_lo of Phi_p];
-    ``table`` = (h, phi_p, phi_s).
+    ``par`` = [Rq, C, r, A1, a1, a2, a3, A2, longitudinal, H_lo of Phi_p, s] with s = -1 for a
+    rough seal (stationary surface, Eq. 13 as printed: h - Rq Phi_s) and +1 for a rough rod
+    (the moving surface: h + Rq Phi_s); ``table`` = (h, phi_p, phi_s).
     """
 
     model: int
@@ -85,23 +86,25 @@ class FlowFactors:
     @classmethod
     def none(cls):
         z = np.zeros(1)
-        return cls(NONE, np.zeros(10), z, z, z)
+        return cls(NONE, np.array([0.0] * 10 + [-1.0]), z, z, z)
 
     @classmethod
-    def patir_cheng(cls, rq, gamma=1.0):
+    def patir_cheng(cls, rq, gamma=1.0, rough_surface="seal"):
         g = tabulated_gamma(gamma)
         if g is None:
             raise ValueError(f"gamma must be one of the tabulated values, got {gamma}")
         c, r = PATIR_CHENG_PRESSURE[g]
         a = PATIR_CHENG_SHEAR[g]
-        par = np.array([rq, c, r, *a, 1.0 if g > 1.0 else 0.0, pressure_fit_floor(g)])
+        par = np.array([rq, c, r, *a, 1.0 if g > 1.0 else 0.0, pressure_fit_floor(g),
+                        _sign(rough_surface)])
         z = np.zeros(1)
         return cls(PATIR_CHENG, par, z, z, z)
 
     @classmethod
-    def from_table(cls, path, rq=0.0):
+    def from_table(cls, path, rq=0.0, rough_surface="seal"):
         h, pp, ps = read_table(path)
-        return cls(TABLE, np.array([rq, 0, 0, 0, 0, 0, 0, 0, 0, 0.0]), h, pp, ps)
+        par = np.array([rq, 0, 0, 0, 0, 0, 0, 0, 0, 0.0, _sign(rough_surface)])
+        return cls(TABLE, par, h, pp, ps)
 
     def evaluate(self, h):
         """(Phi_p, dPhi_p/dh, Phi_s, dPhi_s/dh) at an array of h (mm)."""
@@ -109,16 +112,28 @@ class FlowFactors:
                                   self.table_h, self.table_pp, self.table_ps)
 
 
+def _sign(rough_surface):
+    return 1.0 if rough_surface == "rod" else -1.0
+
+
 def read_table(path):
     """Read a flow-factor CSV with header ``h,phi_p,phi_s``; h in mm, strictly increasing."""
     path = Path(path)
-    with path.open(newline="") as f:
-        rows = list(csv.DictReader(f))
+    try:
+        with path.open(newline="") as f:
+            rows = list(csv.DictReader(f))
+    except (OSError, UnicodeDecodeError) as e:
+        raise ValueError(f"{path}: cannot be read ({e})") from None
     if not rows or not {"h", "phi_p", "phi_s"} <= set(rows[0]):
         raise ValueError(f"{path}: needs the columns h, phi_p, phi_s")
-    h = np.array([float(r["h"]) for r in rows])
-    pp = np.array([float(r["phi_p"]) for r in rows])
-    ps = np.array([float(r["phi_s"]) for r in rows])
+    try:
+        h = np.array([float(r["h"]) for r in rows])
+        pp = np.array([float(r["phi_p"]) for r in rows])
+        ps = np.array([float(r["phi_s"]) for r in rows])
+    except (TypeError, ValueError):
+        raise ValueError(f"{path}: every h, phi_p, phi_s must be a number") from None
+    if not (np.all(np.isfinite(h)) and np.all(np.isfinite(pp)) and np.all(np.isfinite(ps))):
+        raise ValueError(f"{path}: values must be finite")
     if h.size < 2 or np.any(np.diff(h) <= 0):
         raise ValueError(f"{path}: h must be strictly increasing with at least two rows")
     if np.any(pp < 0):

@@ -18,9 +18,16 @@ import numpy as np
 
 
 @numba.njit(cache=True, inline="always")
+def smooth_floor(x, floor):
+    """x for x >= 2 floor, floor (1 + exp(x/floor - 2)) below: C1, increasing, > floor.
+    Returns (value, derivative)."""
+    if x >= 2.0 * floor or floor <= 0.0:
+        return x, 1.0
+    e = np.exp(x / floor - 2.0)
+    return floor * (1.0 + e), e
+
+
+@numba.njit(cache=True, inline="always")
 def h_eff(h, h_floor):
     """Return (h_eff, d h_eff / dh)."""
-    if h >= 2.0 * h_floor or h_floor <= 0.0:
-        return h, 1.0
-    e = np.exp(h / h_floor - 2.0)
-    return h_floor * (1.0 + e), e
+    return smooth_floor(h, h_floor)

@@ -11,7 +11,10 @@ with c0 the pressure-driven flow and y0 the point of zero hydrodynamic gradient,
 h0 = h(y0), Phi_s0 = Phi_s(h0). For a uniform squeeze velocity the last integral is the
 paper's 2 (du/dt)(y - y0); sealts integrates a nodal dh/dt with the trapezoid rule.
 
-Unknowns x = (p_1 .. p_n, c0, y0). Equations:
+Unknowns x = (p_1 .. p_n, c0, y0). Equations (the y0 row carries a tiny anchor
+Y0_ANCHOR (y0 - y_mid), MPa/mm: without sliding and squeeze the hydrodynamic part vanishes
+for every y0, the pure hydrostatic film of the pressurisation step, and the anchor keeps the
+Newton matrix regular; with hydrodynamics it moves y0 by ~1e-12 of its sensitivity):
 
 * p_1 = p_in;
 * p_i = p_{i-1} + dy_i [alpha g_{i-1} + (1 - alpha) g_i],  g = g_hs + g_hd  (Eq. 27);
@@ -28,14 +31,17 @@ import numba
 import numpy as np
 
 from .flow_factors import flow_factors
-from .gap import h_eff
+from .gap import h_eff, smooth_floor
+from .reynolds_fv import PHI_P_MIN
+
+Y0_ANCHOR = 1e-12
 
 
 @numba.njit(cache=True)
 def gradients(y, h, hd, c0, y0, v, eta, h_floor, model, par, th, tpp, tps):
     """Nodal g_hs, g_hd and their derivatives with respect to c0 and y0; plus q and dq."""
     n = y.size
-    rq = par[0]
+    rq = -par[10] * par[0]  # Rq for a rough seal (Eq. 24 as printed), -Rq for a rough rod
     he = np.empty(n)
     w = np.empty(n)
     ps = np.empty(n)
@@ -44,6 +50,7 @@ def gradients(y, h, hd, c0, y0, v, eta, h_floor, model, par, th, tpp, tps):
     for i in range(n):
         he[i], dhe = h_eff(h[i], h_floor)
         pp, _, ps[i], _ = flow_factors(h[i], model, par, th, tpp, tps)
+        pp = smooth_floor(pp, PHI_P_MIN)[0]
         w[i] = 12.0 * eta / (pp * he[i] ** 3)
         hde[i] = dhe * hd[i]
     s[0] = 0.0
@@ -116,7 +123,8 @@ class PaperScheme:
         r[0] = p[0] - self.p_in
         r[1:n] = p[1:] - p[:-1] - self._weighted(ghs + ghd)
         r[n] = self._weighted(ghs).sum() - (self.p_out - self.p_in)
-        r[n + 1] = self._weighted(ghd).sum()
+        y_mid = 0.5 * (self.y[0] + self.y[-1])
+        r[n + 1] = self._weighted(ghd).sum() + Y0_ANCHOR * (x[n + 1] - y_mid)
         return r, q[0], q[-1]
 
     def jacobian(self, t, x, h, hd):
@@ -126,6 +134,7 @@ class PaperScheme:
         dy0 = self._weighted(dghd)
         one = np.ones(n - 1)
         vals = np.concatenate([[1.0], one, -one, -dc, -dy0, dc, dy0])
+        vals[-1] += Y0_ANCHOR  # the (y0, y0) entry is the last of the pattern
         dq = np.array([-1.0, dq_dy0])
         return vals, (dq, dq)
 

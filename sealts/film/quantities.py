@@ -11,6 +11,7 @@
 """
 import math
 
+import numba
 import numpy as np
 
 from .asperity import asperity_pressure_array
@@ -32,8 +33,12 @@ def weighted_gradient(y, f, beta):
     return g
 
 
+@numba.njit(cache=True)
 def effective_gap(h, h_floor):
-    return np.array([h_eff(hi, h_floor)[0] for hi in h])
+    out = np.empty_like(h)
+    for i in range(h.size):
+        out[i] = h_eff(h[i], h_floor)[0]
+    return out
 
 
 def shear_stress(y, h, hd, dpdy, v, eta, h_floor, beta):

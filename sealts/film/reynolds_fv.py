@@ -25,13 +25,19 @@ Discretisation on nodes y_1 < ... < y_n (the seal surface nodes in the coupled p
   end control volumes, Q_in = q_{3/2} + M_1 dh_1/dt and Q_out = q_{n-1/2} - M_n dh_n/dt, so
   Q_in - Q_out = d/dt sum_i M_i h_eff_i holds to round-off: the discrete mass balance is exact.
 
-h enters through :func:`sealts.film.gap.h_eff` (see there for the regularisation at h <= 0).
+h enters through :func:`sealts.film.gap.h_eff` (see there for the regularisation at h <= 0),
+and the conductance uses Phi_p through the same C1 floor, smooth_floor(Phi_p, PHI_P_MIN), so a
+flow factor that vanishes in full contact (Patir-Cheng below H = 0.5, a table starting at 0)
+still leaves a finite, tiny conductance: k >= PHI_P_MIN h_floor^3 / (12 eta). Phi_p is
+unchanged where it exceeds 2 PHI_P_MIN.
 """
 import numba
 import numpy as np
 
 from .flow_factors import flow_factors
-from .gap import h_eff
+from .gap import h_eff, smooth_floor
+
+PHI_P_MIN = 1e-3
 
 # 3-point Gauss-Legendre on [0, 1]
 _GX = np.array([0.5 - 0.5 * np.sqrt(0.6), 0.5, 0.5 + 0.5 * np.sqrt(0.6)])
@@ -42,14 +48,26 @@ _GW = np.array([5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0])
 def conductance(h, eta, h_floor, model, par, th, tpp, tps):
     """Return (1/k, d(1/k)/dh, c/v, d(c/v)/dh) at one h; c/v = (h_eff - Rq Phi_s)/2."""
     he, dhe = h_eff(h, h_floor)
-    pp, dpp, ps, dps = flow_factors(h, model, par, th, tpp, tps)
-    rq = par[0]
+    pp0, dpp0, ps, dps = flow_factors(h, model, par, th, tpp, tps)
+    pp, dfl = smooth_floor(pp0, PHI_P_MIN)
+    dpp = dfl * dpp0
+    srq = par[10] * par[0]  # -Rq for a rough seal, +Rq for a rough rod
     k = pp * he ** 3 / (12.0 * eta)
     dk = (dpp * he ** 3 + 3.0 * pp * he ** 2 * dhe) / (12.0 * eta)
     ik = 1.0 / k
-    cv = 0.5 * (he - rq * ps)
-    dcv = 0.5 * (dhe - rq * dps)
+    cv = 0.5 * (he + srq * ps)
+    dcv = 0.5 * (dhe + srq * dps)
     return ik, -dk * ik * ik, cv, dcv
+
+
+@numba.njit(cache=True)
+def conductance_array(h, eta, h_floor, model, par, th, tpp, tps):
+    """Nodal 1/k and c/v for output (see :func:`conductance`)."""
+    ik = np.empty_like(h)
+    cv = np.empty_like(h)
+    for i in range(h.size):
+        ik[i], _, cv[i], _ = conductance(h[i], eta, h_floor, model, par, th, tpp, tps)
+    return ik, cv
 
 
 @numba.njit(cache=True)
@@ -185,7 +203,8 @@ class ControlVolumeScheme:
 
     def jacobian(self, t, x, h, hd):
         """Values for ``pattern`` and the derivatives of (Q_in, Q_out) at ``q_cols``."""
-        _, dqa, dqb, _ = self._fluxes(t, x, h, hd)
+        _, dqa, dqb, _, _ = element_fluxes(self.y, h, x, self.v_of_t(t), self.eta,
+                                           self.h_floor, *self._ff())
         vals = np.stack([dqa, dqb, -dqa, -dqb], 1).ravel()[self._keep]
         rows = self.pattern[0]
         vals = np.concatenate([vals * self.row_scale[rows[:-2]], [1.0, 1.0]])
@@ -200,12 +219,8 @@ class ControlVolumeScheme:
         qn = np.empty(self.n)
         qn[1:-1] = 0.5 * (q[:-1] + q[1:])
         qn[0], qn[-1] = q[0] + s[0], q[-1] - s[-1]
-        v = self.v_of_t(t)
-        g = np.empty(self.n)
-        for i in range(self.n):
-            ik, _, cv, _ = conductance(h[i], self.eta, self.h_floor, *self._ff())
-            g[i] = (v * cv - qn[i]) * ik
-        return g
+        ik, cv = conductance_array(h, self.eta, self.h_floor, *self._ff())
+        return (self.v_of_t(t) * cv - qn) * ik
 
     def initial_guess(self):
         return np.linspace(self.p_in, self.p_out, self.n)

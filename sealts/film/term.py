@@ -16,15 +16,19 @@ from ..problem import Term
 
 
 class RigidGap:
-    """Film thickness of a rigid tapered gap: h = h_min + s_h (1 - (y - y_1)/l) + hdot t."""
+    """A rigid tapered gap closing at a rate that may vary linearly along the film:
 
-    def __init__(self, y, h_min, s_h, hdot):
+        h = h_min + s_h (1 - xi) + (hdot + tilt (xi - 1/2)) t,   xi = (y - y_1) / l.
+    """
+
+    def __init__(self, y, h_min, s_h, hdot, tilt=0.0):
         y = np.asarray(y, float)
-        self.shape = h_min + s_h * (1.0 - (y - y[0]) / (y[-1] - y[0]))
-        self.hdot = float(hdot)
+        xi = (y - y[0]) / (y[-1] - y[0])
+        self.shape = h_min + s_h * (1.0 - xi)
+        self.rate = hdot + tilt * (xi - 0.5)
 
     def __call__(self, t, u=None, udot=None):
-        return self.shape + self.hdot * t, np.full_like(self.shape, self.hdot)
+        return self.shape + self.rate * t, self.rate.copy()
 
 
 class FilmTerm(Term):

@@ -19,9 +19,9 @@ from .problem import Problem
 
 def flow_factors_of(film):
     if film.flow_factors == "patir-cheng":
-        return FlowFactors.patir_cheng(film.rq, film.gamma)
+        return FlowFactors.patir_cheng(film.rq, film.gamma, film.rough_surface)
     if film.flow_factors == "table":
-        return FlowFactors.from_table(film.table, film.rq)
+        return FlowFactors.from_table(film.table, film.rq, film.rough_surface)
     return FlowFactors.none()
 
 
@@ -38,7 +38,7 @@ class FilmModel:
                 f.h_floor)
         self.scheme = (PaperScheme(*args, alpha=f.alpha) if f.scheme == "paper"
                        else ControlVolumeScheme(*args))
-        self.gap = RigidGap(self.y, g.h_min, g.s_h, g.squeeze_velocity)
+        self.gap = RigidGap(self.y, g.h_min, g.s_h, g.squeeze_velocity, g.tilt_rate)
         self.area = specific_area(g.symmetry, g.width, scene.rod.radius)
         if transient is None:
             transient = scene.analysis.type == "transient"
@@ -173,6 +173,8 @@ def run_film(scene, writer, comm):
         "steps_rejected": counters.rejected,
         "newton_iterations": counters.newton,
         "linear_iterations": counters.linear,
+        "residual_evaluations": counters.residuals,
+        "jacobian_evaluations": counters.jacobians,
         "results": results,
         "units": {"length": "mm", "pressure": "MPa", "force": "N", "time": "s",
                   "flow": "mm^3/s", "volume": "mm^3"},

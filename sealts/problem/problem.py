@@ -23,7 +23,7 @@ the full U (the film-only problems are one-dimensional and small), evaluates all
 keeps the rows it owns; each rank passes only its own COO entries. The distributed linear
 solve is PETSc's (the default parallel preconditioner is ``redundant`` LU).
 """
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from petsc4py import PETSc
@@ -66,7 +66,6 @@ class Counters:
     linear: int = 0
     residuals: int = 0
     jacobians: int = 0
-    extra: dict = field(default_factory=dict)
 
 
 class Problem:
@@ -103,7 +102,6 @@ class Problem:
         self.J.setSizes(((self.rend - self.rstart, self.n), (self.rend - self.rstart, self.n)))
         self.J.setType(PETSc.Mat.Type.AIJ)
         self.J.setPreallocationCOO(rows[self._mine], cols[self._mine])
-        self.nnz_coo = int(self._mine.sum())
 
     # ---- evaluation on full-length numpy arrays --------------------------------------------
     def gather(self, V, seq=None):
@@ -240,8 +238,11 @@ class Problem:
         self.counters.newton += snes.getIterationNumber()
         self.counters.linear += snes.getLinearSolveIterations()
         if reason <= 0:
-            raise SolveError(f"steady Newton solve diverged ({_reason(PETSc.SNES, reason)}); "
-                             "try -snes_monitor and a different -snes_linesearch_type")
+            name = _reason(PETSc.SNES, reason)
+            hint = ("-ksp_monitor_true_residual and another -pc_type"
+                    if name == "DIVERGED_LINEAR_SOLVE"
+                    else "-snes_monitor and another -snes_linesearch_type")
+            raise SolveError(f"steady Newton solve diverged ({name}); try {hint}")
         u = self.gather(X).copy()
         snes.destroy()
         return u

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 
-from ..film.flow_factors import PATIR_CHENG_GAMMAS, tabulated_gamma
+from ..film.flow_factors import PATIR_CHENG_GAMMAS, read_table, tabulated_gamma
 from .errors import SceneError
 from .spec import build, option
 
@@ -32,6 +32,8 @@ class Gap:
     h_min: float = option(1e-3, unit="mm", gt=0.0, doc="gap at the thin end y = l, t = 0")
     s_h: float = option(0.0, unit="mm", ge=0.0, doc="taper: gap at y = 0 is h_min + s_h")
     squeeze_velocity: float = option(0.0, unit="mm/s", doc="dh/dt of the whole gap (du/dt)")
+    tilt_rate: float = option(0.0, unit="mm/s",
+                              doc="squeeze rate varies by this much from y = 0 to y = l")
     symmetry: str = option("planar", choices=("planar", "axisymmetric"),
                            doc="area factor of Eq. 31: width (planar) or 2 pi rod.radius")
     width: float = option(1.0, unit="mm", gt=0.0, doc="film depth of a planar scene")
@@ -64,7 +66,9 @@ class Film:
     gamma: float = option(1.0, gt=0.0,
                           doc="Peklenik number for patir-cheng: 1/9, 1/6, 1/3, 1, 3, 6 or 9")
     table: str = option("", doc="CSV with columns h [mm], phi_p, phi_s (flow_factors = table)")
-    h_floor: float = option(1e-5, unit="mm", ge=0.0,
+    rough_surface: str = option("seal", choices=("seal", "rod"),
+                                doc="which surface carries Rq: sign of the Phi_s term")
+    h_floor: float = option(1e-5, unit="mm", gt=0.0,
                             doc="gap regularisation: the film conducts as if h >= h_floor")
 
 
@@ -77,6 +81,51 @@ class Asperity:
 
 
 @dataclass(frozen=True)
+class Seal:
+    shape: str = option("oring", choices=("oring", "rectangle"), doc="seal cross-section")
+    d1: float = option(50.17, unit="mm", gt=0.0, doc="O-ring inner diameter")
+    d2: float = option(5.33, unit="mm", gt=0.0, doc="O-ring cord diameter")
+    width: float = option(2.0, unit="mm", gt=0.0, doc="rectangle: axial width")
+    height: float = option(2.0, unit="mm", gt=0.0, doc="rectangle: radial height")
+    inner_diameter: float = option(50.0, unit="mm", gt=0.0, doc="rectangle: inner diameter")
+    symmetry: str = option("axisymmetric", choices=("axisymmetric", "planar"),
+                           doc="axisymmetric ring or plane strain (per mm of depth)")
+
+
+@dataclass(frozen=True)
+class Groove:
+    diameter: float = option(59.4, unit="mm", gt=0.0, doc="groove (bottom) diameter dG")
+    width: float = option(5.6, unit="mm", gt=0.0, doc="groove width b between side walls")
+
+
+@dataclass(frozen=True)
+class Material:
+    model: str = option("neo-hooke", choices=("neo-hooke",), doc="hyperelastic law (Eq. 1)")
+    c10: float = option(1.064, unit="MPa", gt=0.0, doc="Neo-Hooke C10 (G = 2 C10)")
+    d1: float = option(0.001, unit="mm^2/N", gt=0.0, doc="compressibility D1 (K = 2/D1)")
+    alpha_th: float = option(0.0, unit="1/K", ge=0.0, doc="thermal expansion (Eq. 3-5)")
+    temperature_rise: float = option(0.0, unit="K", doc="temperature above the reference")
+
+
+@dataclass(frozen=True)
+class Mesh:
+    h_contact: float = option(0.01, unit="mm", gt=0.0, doc="element size along the rod side")
+    h_bulk: float = option(0.05, unit="mm", gt=0.0, doc="element size in the bulk")
+    grading_distance: float = option(0.5, unit="mm", gt=0.0,
+                                     doc="distance over which sizes grow to h_bulk")
+    cache: str = option("meshes", doc="mesh cache directory (relative to the working dir)")
+
+
+@dataclass(frozen=True)
+class Mount:
+    t_hold: float = option(2.0, gt=1.0, doc="pseudo-time of the hold after the ramp (ramp: 0..1)")
+    dt: float = option(0.02, gt=0.0, doc="first pseudo-time step")
+    stabilisation: float = option(1e-3, unit="MPa s/mm^2", ge=0.0,
+                                  doc="viscous stabilisation c of rigid-body modes")
+    penalty: float = option(1e4, unit="MPa/mm", gt=0.0, doc="groove wall penalty stiffness")
+
+
+@dataclass(frozen=True)
 class Output:
     plot: bool = option(True, doc="write PNG plots")
     progress: bool = option(True, doc="print t, dt and Newton iterations while running")
@@ -86,13 +135,19 @@ class Output:
 class Scene:
     name: str = option("scene", doc="scene name, used in output")
     description: str = option("", doc="free text")
-    model: str = option("film", choices=("film",), doc="film: a film on a rigid gap")
+    model: str = option("film", choices=("film", "seal"),
+                        doc="film: a film on a rigid gap; seal: the seal mounted in its groove")
     analysis: Analysis = option(Analysis(), doc="steady or transient, times")
     gap: Gap = option(Gap(), doc="rigid gap geometry of a film-only scene")
     fluid: Fluid = option(Fluid(), doc="fluid and boundary pressures")
     rod: Rod = option(Rod(), doc="rod motion and size")
     film: Film = option(Film(), doc="film discretisation and flow factors")
     asperity: Asperity = option(Asperity(), doc="asperity contact law")
+    seal: Seal = option(Seal(), doc="seal cross-section (model = seal)")
+    groove: Groove = option(Groove(), doc="rigid rod groove (model = seal)")
+    material: Material = option(Material(), doc="seal material, long-term (model = seal)")
+    mesh: Mesh = option(Mesh(), doc="seal mesh sizes (model = seal)")
+    mount: Mount = option(Mount(), doc="mounting step (model = seal)")
     output: Output = option(Output(), doc="what to write")
     petsc: dict = field(default_factory=dict, metadata=dict(doc="default PETSc options"))
     source: str = field(default="<embedded>", metadata=dict(doc="where the scene came from"))
@@ -117,8 +172,39 @@ def _check_petsc(table):
     return out
 
 
+def _check_seal_geometry(s):
+    """Impossible seal geometry: each key fine alone, not together."""
+    sl, gr, rod = s.seal, s.groove, s.rod
+    if 2 * rod.radius >= gr.diameter:
+        raise SceneError(f"rod.radius = {rod.radius:g} mm: the rod diameter must be below "
+                         f"groove.diameter = {gr.diameter:g} mm")
+    if sl.shape == "oring":
+        if sl.d2 >= gr.width:
+            raise SceneError(f"seal.d2 = {sl.d2:g} mm: the cord must be narrower than "
+                             f"groove.width = {gr.width:g} mm")
+        inner, radial = 0.5 * sl.d1, sl.d2
+    else:
+        if sl.width >= gr.width:
+            raise SceneError(f"seal.width = {sl.width:g} mm must be below "
+                             f"groove.width = {gr.width:g} mm")
+        inner, radial = 0.5 * sl.inner_diameter, sl.height
+    space = 0.5 * gr.diameter - rod.radius
+    if radial > 1.35 * space:
+        raise SceneError(f"seal: radial size {radial:g} mm squeezed into {space:g} mm "
+                         f"(over 35 % squeeze) cannot be mounted")
+    if inner + radial <= rod.radius or inner >= 0.5 * gr.diameter:
+        raise SceneError("seal: the cross-section does not lie between rod and groove bottom")
+    m = s.mesh
+    if m.h_contact > m.h_bulk:
+        raise SceneError(f"mesh.h_contact = {m.h_contact:g} mm must not exceed "
+                         f"mesh.h_bulk = {m.h_bulk:g} mm")
+
+
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
+    if s.model == "seal":
+        _check_seal_geometry(s)
+        return
     a, g, f = s.analysis, s.gap, s.film
     if a.type == "transient":
         late = [t for t in a.output_times if t > a.t_end]
@@ -128,7 +214,10 @@ def _check_consistency(s, base):
         if a.dt > a.t_end:
             raise SceneError(f"analysis.dt = {a.dt:g} s exceeds analysis.t_end = {a.t_end:g} s")
     t_last = a.t_end if a.type == "transient" else a.time
-    if g.h_min + g.squeeze_velocity * t_last <= 0.0:
+    # the gap is linear in y and t: its minimum is at an end, at t = 0 or t_last
+    ends = (g.h_min + g.s_h + (g.squeeze_velocity - 0.5 * g.tilt_rate) * t_last,
+            g.h_min + (g.squeeze_velocity + 0.5 * g.tilt_rate) * t_last)
+    if min(ends) <= 0.0:
         raise SceneError(f"gap.squeeze_velocity = {g.squeeze_velocity:g} mm/s closes the gap "
                          f"(h_min = {g.h_min:g} mm) before t = {t_last:g} s")
     if f.flow_factors == "patir-cheng":
@@ -143,6 +232,10 @@ def _check_consistency(s, base):
         path = Path(f.table) if Path(f.table).is_absolute() else base / f.table
         if not path.is_file():
             raise SceneError(f"film.table: no such file {path}")
+        try:
+            read_table(path)
+        except ValueError as e:
+            raise SceneError(f"film.table: {e}") from None
 
 
 def parse_scene(text, source="<string>", base=None):
@@ -176,9 +269,15 @@ def _replace(obj, **kw):
 def load_scene(path):
     """Load a scene file; a missing file is a SceneError too."""
     path = Path(path)
+    if path.is_dir():
+        raise SceneError(f"scene file {path} is a directory")
     if not path.is_file():
         raise SceneError(f"scene file not found: {path}")
-    return parse_scene(path.read_text(), source=str(path), base=path.parent)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        raise SceneError(f"scene file {path} cannot be read as UTF-8 text ({e})") from None
+    return parse_scene(text, source=str(path), base=path.parent)
 
 
 def default_scene():

@@ -6,6 +6,7 @@ out-of-range values with a :class:`SceneError` that names the dotted key.
 """
 import dataclasses
 import difflib
+import math
 import typing
 
 from .errors import SceneError
@@ -33,6 +34,8 @@ def _convert(value, tp, key):
     if tp is float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise SceneError(f"{key} must be a number (got {value!r})")
+        if not math.isfinite(value):
+            raise SceneError(f"{key} must be a finite number (got {value!r})")
         return float(value)
     if tp is int:
         if isinstance(value, bool) or not isinstance(value, int):
