@@ -75,13 +75,23 @@ def run(args):
     PETSc = _init_petsc(petsc_args, scene)
     comm = PETSc.COMM_WORLD
     from .io import Writer
-    from .problem.film_run import run_film
     writer = Writer(out, comm, plots=scene.output.plot)
     try:
-        summary = run_film(scene, writer, comm)
+        if scene.model == "seal":
+            from .problem.seal_run import run_seal
+            summary = run_seal(scene, writer, comm)
+        else:
+            from .problem.film_run import run_film
+            summary = run_film(scene, writer, comm)
     finally:
         writer.close()
-    if comm.getRank() == 0 and scene.output.progress:
+    if comm.getRank() == 0 and scene.output.progress and scene.model == "seal":
+        r = summary["results"]
+        print(f"{scene.name}: contact force {r['contact_force_total']:.6g} N "
+              f"({r['contact_force_per_length']:.6g} N/mm), width {r['contact_width']:.4g} mm, "
+              f"peak {r['p_contact_max']:.4g} MPa  ({summary['wall_time_s']:.1f} s wall)")
+        print(f"written: {out}/summary.json, profiles.csv, fields.xdmf/.h5, PNG plots")
+    elif comm.getRank() == 0 and scene.output.progress:
         r = summary["results"]
         print(f"{scene.name} at t = {r['t']:.6g} s: p_max = {r['p_max']:.6g} MPa at y = {r['y_at_p_max']:.4g} mm, "
               f"load = {r['load']:.6g} N, Q_out = {r['Q_out']:.6g} mm^3/s, "

@@ -118,3 +118,15 @@ def test_shear_stress_squeeze_gradient_term():
     assert np.allclose(tau[1:-1], -eta * 2 * b * y[1:-1], rtol=1e-12)
     tau_b = shear_stress(y, h, hd, np.zeros_like(y), 0.0, eta, 1e-6, 1.0)
     assert np.allclose(tau_b[1:-1], -eta * (2 * b * y[1:-1] - b * 0.1), rtol=1e-12)
+
+
+def test_asperity_law_tangent_continuation():
+    """Below h = -h_mix the law continues along its tangent: C1 there, linear beyond."""
+    h_mix, p_mix = 7e-4, 15.0
+    e = 1e-12
+    a = asperity_pressure_array(np.array([-h_mix + e, -h_mix - e]), h_mix, p_mix)
+    assert a[0][0] == pytest.approx(a[0][1], rel=1e-8)
+    assert a[1][0] == pytest.approx(a[1][1], rel=1e-8)
+    assert a[0][0] == pytest.approx(p_mix * 2 * (math.e**2 - 1) / (math.e - 1))
+    far, d = asperity_pressure_array(np.array([-0.1, -0.2]), h_mix, p_mix)
+    assert np.isfinite(far).all() and d[0] == d[1] and far[1] > far[0]

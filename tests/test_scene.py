@@ -107,3 +107,21 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     assert "Traceback" not in r.stderr
     r = sealts("run", str(tmp_path))
     assert r.returncode == 2 and "is a directory" in r.stderr
+
+
+@pytest.mark.parametrize("extra, message", [
+    ("[seal]\nd2 = 5.8\n", "seal.d2 = 5.8 mm: the cord must be narrower than groove.width"),
+    ("[rod]\nradius = 29.7\n", "the rod diameter must be below groove.diameter"),
+    ("[seal]\nd1 = -50.0\n", "seal.d1 must be > 0 mm (got -50)"),
+    ("[groove]\ndiameter = 56.0\n", "over 35 % squeeze"),
+    ("[mesh]\nh_contact = 0.1\nh_bulk = 0.05\n", "mesh.h_contact = 0.1 mm must not exceed"),
+])
+def test_impossible_seal_geometry(extra, message):
+    base = (CONFIGS / "oring_mount.toml").read_text()
+    table = tomllib.loads(base)
+    for sec, kv in tomllib.loads(extra).items():
+        table.setdefault(sec, {}).update(kv)
+    from sealts.scene.schema import scene_from_table
+    with pytest.raises(SceneError) as e:
+        scene_from_table(table)
+    assert message in str(e.value)

@@ -5,6 +5,11 @@
 
 p_s is C1 at h = h_mix (value and slope vanish), equals p_mix at h = 0 and keeps growing for
 h < 0. The nodal force is p_s A_i (Eq. 45).
+
+Below h = -h_mix (where p_s = 2 p_mix (e^2 - 1)/(e - 1), 7.4 p_mix, 112 MPa for the paper's
+15 MPa) sealts continues the law along its tangent: still growing, still C1, but linear, so a
+Newton predictor that pushes a node deep into the rod meets a large finite force instead of
+exp(h/h_mix) overflowing. Contact states of interest (p_s of a few MPa) are untouched.
 """
 import math
 
@@ -20,6 +25,11 @@ def asperity_pressure(h, h_mix, p_mix):
     if h >= h_mix:
         return 0.0, 0.0
     x = 1.0 - h / h_mix
+    if x > 2.0:  # tangent continuation below h = -h_mix
+        e2 = np.exp(2.0)
+        p2 = p_mix / _E1 * 2.0 * (e2 - 1.0)
+        d2 = p_mix / _E1 * (e2 - 1.0 + 2.0 * e2)
+        return p2 + d2 * (x - 2.0), -d2 / h_mix
     ex = np.exp(x)
     p = p_mix / _E1 * x * (ex - 1.0)
     dp_dx = p_mix / _E1 * (ex - 1.0 + x * ex)

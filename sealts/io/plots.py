@@ -7,23 +7,30 @@ import numpy as np  # noqa: E402
 
 
 def plot_profiles(profiles, path):
-    """Film thickness (um), pressure and shear (MPa) along y for each output time."""
-    has_asp = "p_asperity" in profiles[0][1]
-    fig, ax = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
+    """Film thickness (um), pressures and shear (MPa) along y for each output time.
+
+    Plots whichever of p, p_asperity, p_contact (pressures) and tau, tau_solid (shear) the
+    profiles carry."""
+    first = profiles[0][1]
+    pressures = [k for k in ("p", "p_asperity", "p_contact") if k in first]
+    shears = [k for k in ("tau", "tau_solid") if k in first]
+    rows = 2 + bool(shears)
+    fig, ax = plt.subplots(rows, 1, figsize=(7, 2.7 * rows + 0.5), sharex=True)
     for t, pr in profiles:
-        lab = f"t = {t:.4g} s"
+        lab = f"t = {t:.4g}"
         ax[0].plot(pr["y"], np.asarray(pr["h"]) * 1e3, label=lab)
-        ax[1].plot(pr["y"], pr["p"], label=lab)
-        if has_asp:
-            ax[1].plot(pr["y"], pr["p_asperity"], "--", label=f"asperity, {lab}")
-        ax[2].plot(pr["y"], pr["tau"], label=lab)
-    ax[0].set_ylabel("film thickness h [um]")
-    ax[1].set_ylabel("pressure p [MPa]")
-    ax[2].set_ylabel("fluid shear tau [MPa]")
-    ax[2].set_xlabel("axial position y [mm]")
+        for k, style in zip(pressures, ("-", "--", "-")):
+            ax[1].plot(pr["y"], pr[k], style, label=f"{k}, {lab}")
+        for k, style in zip(shears, ("-", "--")):
+            ax[2].plot(pr["y"], pr[k], style, label=f"{k}, {lab}")
+    ax[0].set_ylabel("gap h [um]")
+    ax[1].set_ylabel("pressure [MPa]")
+    if shears:
+        ax[2].set_ylabel("shear stress [MPa]")
+    ax[-1].set_xlabel("axial position y [mm]")
     for a in ax:
         a.grid(alpha=0.3)
-    if len(profiles) <= 8:
+    if len(profiles) * len(pressures) <= 8:
         ax[1].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=120)

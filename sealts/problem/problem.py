@@ -71,12 +71,21 @@ class Counters:
 class Problem:
     """A DAE assembled from terms, solved with PETSc TS (transient) or SNES (steady)."""
 
-    def __init__(self, n, terms, comm=None, prefix=None, constraints=None, linesearch="bt"):
+    def __init__(self, n, terms, comm=None, prefix=None, constraints=None, linesearch="bt",
+                 snes_atol=None):
         """``linesearch`` is the default SNES line search (the command line overrides it):
         ``bt`` for the film; ``basic`` for near-incompressible solids, where the residual
         norm is a poor merit function. Measured on a bent block with K/G ~ 940: basic 6
-        Newton iterations, cp 12, l2 20, bt stalls at 50 (docs/design.md)."""
+        Newton iterations, cp 12, l2 20, bt stalls at 50 (docs/design.md).
+
+        ``snes_atol`` (units of the residual, e.g. N) makes Newton convergence absolute: the
+        relative test max(atol, rtol |F0|) accepts nonsense when a poor predictor makes |F0|
+        huge, which happened in quasi-static mounting (rod force 1e4 N accepted for 450 N).
+        Without it the defaults are rtol 1e-10, atol 1e-12."""
         self.linesearch = linesearch
+        self.max_it = 50  # of a steady SNES solve
+        self.snes_tol = (dict(rtol=1e-10, atol=1e-12) if snes_atol is None
+                         else dict(rtol=1e-14, atol=snes_atol, stol=1e-14))
         self.comm = comm or PETSc.COMM_WORLD
         self.n = int(n)
         self.terms = list(terms)
@@ -190,12 +199,12 @@ class Problem:
         snes.setJacobian(self.snes_jacobian, self.J)
         snes.setType(PETSc.SNES.Type.NEWTONLS)
         snes.getLineSearch().setType(self.linesearch)
-        snes.setTolerances(rtol=1e-10, atol=1e-12, max_it=50)
+        snes.setTolerances(max_it=self.max_it, **self.snes_tol)
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
         return snes
 
-    def make_ts(self, t0, t_end, dt0, monitor=None):
+    def make_ts(self, t0, t_end, dt0, monitor=None, rtol=1e-6, atol=1e-8):
         ts = PETSc.TS().create(comm=self.comm)
         if self.prefix:
             ts.setOptionsPrefix(self.prefix)
@@ -210,12 +219,15 @@ class Problem:
         ts.setMaxSteps(10_000_000)
         ts.setExactFinalTime(PETSc.TS.ExactFinalTime.MATCHSTEP)
         ts.setMaxSNESFailures(-1)  # a failed Newton solve rejects the step; TSAdapt retries
-        ts.setTolerances(rtol=1e-6, atol=1e-8)
+        ts.setErrorIfStepFails(False)  # report a TS that gives up through its reason
+        ts.setTolerances(rtol=rtol, atol=atol)
         self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
+        # a run whose steps shrink below 1e-12 of its span fails instead of crawling on
+        self._default_option("ts_adapt_dt_min", repr(1e-12 * max(t_end - t0, 1e-300)))
         snes = ts.getSNES()
         snes.setType(PETSc.SNES.Type.NEWTONLS)
         snes.getLineSearch().setType(self.linesearch)
-        snes.setTolerances(rtol=1e-10, atol=1e-12, max_it=25)
+        snes.setTolerances(max_it=25, **self.snes_tol)
         self._default_linear_solver(snes.getKSP())
         if monitor is not None:
             ts.setMonitor(monitor)
@@ -247,7 +259,8 @@ class Problem:
         snes.destroy()
         return u
 
-    def transient(self, u0, t0, t_end, dt0, stops=(), on_step=None, on_stop=None):
+    def transient(self, u0, t0, t_end, dt0, stops=(), on_step=None, on_stop=None,
+                  rtol=1e-6, atol=1e-8):
         """Integrate from t0 to t_end with adaptive steps.
 
         ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0);
@@ -261,12 +274,16 @@ class Problem:
                 last[0] = t
                 on_step(ts, step, t, self.gather(X).copy())
 
-        ts = self.make_ts(t0, t_end, dt0, monitor=monitor)
+        ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
         X = self._owned(u0)
         targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
         for target in targets:
             ts.setMaxTime(target)
-            ts.solve(X)
+            try:
+                ts.solve(X)
+            except PETSc.Error as e:
+                raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
+                                 f"(PETSc error {e.ierr}); see the PETSc message above") from None
             reason = ts.getConvergedReason()
             if reason < 0:
                 raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "

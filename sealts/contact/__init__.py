@@ -1,0 +1,1 @@
+"""Rigid analytical surfaces (rod, groove) and their contact laws with the seal."""

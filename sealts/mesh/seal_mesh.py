@@ -1,0 +1,177 @@
+"""Seal cross-section meshes from the gmsh Python API, cached under ``meshes/``.
+
+Coordinates (r, z) in mm: r radial (the rod axis is r = 0), z axial. The pressurised side is
+at small z, the atmosphere at large z, so the film coordinate y runs with z, and a rod moving
+in +z is an outstroke.
+
+Named boundaries (gmsh physical curves, kept as node and edge sets):
+
+* ``rod_side``        faces the rod and carries the film;
+* ``pressure_side``   faces the sealed fluid;
+* ``atmosphere_side`` faces the atmosphere;
+* ``groove``          faces the groove bottom.
+
+For the O-ring the four quarter arcs are centred on the directions -r (rod_side), -z
+(pressure_side), +r (groove) and +z (atmosphere_side). Elements are four-node quads
+(recombined, subdivided so that none is left triangular), of size ``h_contact`` next to the
+rod side and growing to ``h_bulk`` over ``grading_distance``.
+"""
+import hashlib
+import json
+import math
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+GROUPS = ("rod_side", "pressure_side", "groove", "atmosphere_side")
+
+
+@dataclass(frozen=True)
+class SealMesh:
+    X: np.ndarray              # (nodes, 2) reference coordinates (r, z), mm
+    conn: np.ndarray           # (elements, 4) counter-clockwise
+    edges: dict                # group -> (m, 2) boundary edges (node pairs)
+
+    def nodes(self, group):
+        """Sorted node numbers of a named boundary."""
+        return np.unique(self.edges[group])
+
+    def boundary_nodes(self):
+        return np.unique(np.concatenate([e.ravel() for e in self.edges.values()]))
+
+    def chain(self, group):
+        """Nodes of an open boundary group in order along the curve, by increasing z."""
+        e = self.edges[group]
+        nxt = {}
+        deg = {}
+        for a, b in e:
+            nxt.setdefault(a, []).append(b)
+            nxt.setdefault(b, []).append(a)
+            deg[a] = deg.get(a, 0) + 1
+            deg[b] = deg.get(b, 0) + 1
+        ends = [n for n, d in deg.items() if d == 1]
+        start = min(ends, key=lambda n: self.X[n, 1])
+        out, prev = [start], None
+        while len(out) < len(deg):
+            cur = out[-1]
+            cand = [n for n in nxt[cur] if n != prev]
+            prev = cur
+            out.append(cand[0])
+        return np.array(out)
+
+
+@dataclass(frozen=True)
+class ORing:
+    d1: float          # inner diameter, mm
+    d2: float          # cord diameter, mm
+    z0: float = 0.0    # axial position of the cord centre, mm
+
+
+@dataclass(frozen=True)
+class RectangularRing:
+    r_inner: float
+    r_outer: float
+    z_min: float
+    z_max: float
+
+
+def _key(shape, h_contact, h_bulk, grading_distance):
+    spec = dict(kind=type(shape).__name__, **asdict(shape), h_contact=h_contact,
+                h_bulk=h_bulk, grading=grading_distance, version=1)
+    text = json.dumps(spec, sort_keys=True)
+    return hashlib.sha1(text.encode()).hexdigest()[:12], spec
+
+
+def build_mesh(shape, h_contact, h_bulk, grading_distance=0.5, cache_dir="meshes"):
+    """Mesh ``shape`` (ORing or RectangularRing), reusing ``cache_dir/<key>.npz``."""
+    key, spec = _key(shape, h_contact, h_bulk, grading_distance)
+    path = Path(cache_dir) / f"{spec['kind'].lower()}-{key}.npz"
+    if path.is_file():
+        return load_npz(path)
+    mesh = _gmsh_mesh(shape, h_contact, h_bulk, grading_distance)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    np.savez_compressed(path, X=mesh.X, conn=mesh.conn, spec=json.dumps(spec),
+                        **{f"edges_{g}": e for g, e in mesh.edges.items()})
+    return mesh
+
+
+def load_npz(path):
+    d = np.load(path)
+    edges = {k[6:]: d[k] for k in d.files if k.startswith("edges_")}
+    return SealMesh(d["X"], d["conn"], edges)
+
+
+def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance):
+    import gmsh
+    gmsh.initialize(interruptible=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("seal")
+        occ = gmsh.model.occ
+        if isinstance(shape, ORing):
+            rc, R = 0.5 * (shape.d1 + shape.d2), 0.5 * shape.d2
+            c = occ.addPoint(rc, shape.z0, 0)
+            angles = [0.75 * math.pi, 1.25 * math.pi, 1.75 * math.pi, 0.25 * math.pi]
+            pts = [occ.addPoint(rc + R * math.cos(a), shape.z0 + R * math.sin(a), 0)
+                   for a in angles]
+            curves = [occ.addCircleArc(pts[i], c, pts[(i + 1) % 4]) for i in range(4)]
+        else:
+            s = shape
+            pts = [occ.addPoint(s.r_inner, s.z_max, 0), occ.addPoint(s.r_inner, s.z_min, 0),
+                   occ.addPoint(s.r_outer, s.z_min, 0), occ.addPoint(s.r_outer, s.z_max, 0)]
+            curves = [occ.addLine(pts[i], pts[(i + 1) % 4]) for i in range(4)]
+        loop = occ.addCurveLoop(curves)
+        surf = occ.addPlaneSurface([loop])
+        occ.synchronize()
+        # curves in order: rod side, pressure side, groove, atmosphere side
+        for name, cv in zip(GROUPS, curves):
+            gmsh.model.addPhysicalGroup(1, [cv], name=name)
+        gmsh.model.addPhysicalGroup(2, [surf], name="seal")
+        f = gmsh.model.mesh.field
+        dist = f.add("Distance")
+        f.setNumbers(dist, "CurvesList", [curves[0]])
+        f.setNumber(dist, "Sampling", 400)
+        thr = f.add("Threshold")
+        f.setNumber(thr, "InField", dist)
+        # subdivision halves every size: ask for twice the target
+        f.setNumber(thr, "SizeMin", 2 * h_contact)
+        f.setNumber(thr, "SizeMax", 2 * h_bulk)
+        f.setNumber(thr, "DistMin", 0.0)
+        f.setNumber(thr, "DistMax", grading_distance)
+        f.setAsBackgroundMesh(thr)
+        gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+        gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+        gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+        gmsh.option.setNumber("Mesh.Algorithm", 8)
+        gmsh.option.setNumber("Mesh.RecombineAll", 1)
+        gmsh.option.setNumber("Mesh.SubdivisionAlgorithm", 1)
+        gmsh.model.mesh.generate(2)
+        tags, coords, _ = gmsh.model.mesh.getNodes()
+        index = {int(t): i for i, t in enumerate(tags)}
+        X = coords.reshape(-1, 3)[:, :2].copy()
+        etypes, _, enodes = gmsh.model.mesh.getElements(2)
+        quads = [n for t, n in zip(etypes, enodes) if t == 3]
+        if len(etypes) != 1 or not quads:
+            raise RuntimeError("gmsh left non-quadrilateral elements")
+        conn = np.vectorize(index.get)(quads[0].reshape(-1, 4).astype(np.int64))
+        edges = {}
+        for name, cv in zip(GROUPS, curves):
+            _, _, en = gmsh.model.mesh.getElements(1, cv)
+            edges[name] = np.vectorize(index.get)(en[0].reshape(-1, 2).astype(np.int64))
+    finally:
+        gmsh.finalize()
+    return _tidy(X, conn, edges)
+
+
+def _tidy(X, conn, edges):
+    """Drop unused nodes (the arc centre), renumber, orient elements counter-clockwise."""
+    used = np.unique(conn)
+    new = -np.ones(X.shape[0], np.int64)
+    new[used] = np.arange(used.size)
+    X, conn = X[used], new[conn]
+    edges = {g: new[e] for g, e in edges.items()}
+    x, y = X[conn, 0], X[conn, 1]
+    area = 0.5 * (x * np.roll(y, -1, 1) - np.roll(x, -1, 1) * y).sum(1)
+    conn[area < 0] = conn[area < 0][:, ::-1]
+    return SealMesh(X, conn, edges)
