@@ -103,6 +103,43 @@ def test_axisymmetric_side_walls_balance_and_25_percent_squeeze(tmp_path):
     assert r["h_min"] > -7e-4   # no node deeper than h_mix into the rod
 
 
+def test_pressure_load_jacobian(tmp_path):
+    """The follower pressure's load stiffness against central differences (bound 1e-7)."""
+    from sealts.solid.pressure import PressureLoad
+    m = build_mesh(ORing(50.17, 5.33), 0.3, 0.6, cache_dir=tmp_path)
+    n = 2 * m.X.shape[0]
+    for axisym in (True, False):
+        load = PressureLoad(m.X, m.conn, lambda t: 1.3, axisym, m.nodes("pressure_side")[0])
+        load.wet[::3] = False
+        u = np.random.default_rng(2).uniform(-0.05, 0.05, n)
+        problem = Problem(n, [load])
+        J = problem.jacobian_dense(0.0, u, u, 0.0)
+        for j in range(0, n, 7):
+            e = np.zeros(n)
+            e[j] = 1e-7
+            fd = (problem.residual(0.0, u + e, u) - problem.residual(0.0, u - e, u)) / 2e-7
+            assert np.abs(J[:, j] - fd).max() <= 1e-7 * np.abs(J).max()
+
+
+def test_pressurised_oring_balances_the_annulus_load(tmp_path):
+    """p_in = 1 MPa after mounting: the seal seals at the rod and the groove bottom, so the
+    axial load it passes to the atmosphere-side wall is p_in pi (r_G^2 - r_rod^2), 807.7 N
+    (frictionless rod). The rod contact peak exceeds p_in (it seals) and the seal leaves the
+    pressure-side wall."""
+    model, u, _ = mount(tmp_path)
+    u = model.pressurise(u, 1.0)
+    r = model.results(4.0, u)
+    g = r["groove_reactions"]
+    annulus = np.pi * (29.7**2 - 25.0**2)
+    _, fz = model.pressure_resultant(4.0, u)
+    assert r["static_equilibrium"]
+    assert fz == pytest.approx(annulus, rel=1e-3)
+    assert -g["wall_atmosphere_side"] - g["wall_pressure_side"] == pytest.approx(fz, rel=1e-6)
+    assert g["wall_pressure_side"] < 1e-3
+    assert r["p_contact_max"] > 1.0
+    assert r["contact_force_total"] > 1.5 * 449.8  # pressed harder onto the rod than mounted
+
+
 def test_cli_mount_writes_fields_profile_and_summary(tmp_path):
     cfg = tmp_path / "m.toml"
     text = (CONFIGS / "oring_mount.toml").read_text()

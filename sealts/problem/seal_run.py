@@ -1,10 +1,14 @@
-"""Seal scenes: the solid seal between a rigid rod and groove (mounting step).
+"""Seal scenes: the solid seal between a rigid rod and groove (mounting, pressurisation).
 
 Mounting (paper Section 3.1.1, step 1): long-term material, frictionless. The groove bottom
 starts just clear of the seal and moves to its final radius over the pseudo-time 0..1, like
 ABAQUS's interference fit resolved gradually; the rod stays at its radius (the O-ring's
 inner diameter may be smaller than the rod's: then the rod starts inside and grows). A hold
 until t = t_hold lets the viscous stabilisation die out; the run reports its residual share.
+
+Pressurisation (step 2), when the scene's fluid.p_in is not zero: p_in ramps on the wetted
+free surface over the next pseudo-time unit and holds for as long again (see
+:mod:`sealts.solid.pressure` for the pressure penetration).
 """
 import time
 
@@ -94,6 +98,56 @@ class SealModel:
             self.udot = (u1 - u0) / (t1 - t0)
             self.static = False
         return u
+
+    def node_contact_pressure(self, t, u):
+        """Largest contact pressure (groove walls, rod) at every node, MPa (0 off the walls)."""
+        pc = np.zeros(self.mesh.X.shape[0])
+        g = self.groove
+        pb, _, pa, _, pz, _ = g._walls(t, u)
+        pc[g.nodes] = np.maximum(np.maximum(pb, pa), pz)
+        p_rod, _ = self.rod.pressure(t, u)
+        np.maximum.at(pc, self.rod.chain, p_rod)
+        return pc
+
+    def pressurise(self, u0, p_in, t0=2.0, t_hold=4.0, dt0=0.02, comm=None, on_step=None):
+        """Step 2 of the paper: p_in ramped on the wetted free surface from t0 to t0 + 1,
+        held to t_hold, from the mounted state u0; pressure penetration updated after every
+        accepted step. Long-term material, frictionless (the film comes with the coupling)."""
+        from ..solid.pressure import PressureLoad
+        chain_p = self.mesh.nodes("pressure_side")
+        start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
+        self.load = PressureLoad(self.mesh.X, self.mesh.conn,
+                                 lambda t: p_in * ramp(t - t0), self.axisym, start)
+        self.load.update(self.node_contact_pressure(t0, u0), 0.0)
+        terms = self.terms + [self.load]
+        problem = Problem(self.n, terms, comm=comm, linesearch="basic",
+                          snes_atol=1e-9 * self.force_scale)
+        hist = []
+
+        def record(ts, step, t, u):
+            hist[:] = hist[-1:] + [(t, u)]
+            self.load.update(self.node_contact_pressure(t, u), self.load.pressure(t))
+            if on_step is not None:
+                on_step(ts, step, t, u)
+
+        u = problem.transient(u0, t0, t_hold, dt0, stops=(t0 + 1.0,), on_step=record,
+                              rtol=1e-3, atol=1e-4)
+        self.problem = problem
+        static = Problem(self.n, [self.solid, self.rod, self.groove, self.load], comm=comm,
+                         linesearch="basic", snes_atol=1e-9 * self.force_scale, prefix="static_")
+        static.max_it = 10
+        try:
+            u = static.solve_steady(u, t_hold)
+            self.udot, self.static = np.zeros(self.n), True
+        except SolveError:
+            (ta, ua), (tb, ub) = hist[-2], hist[-1]
+            self.udot, self.static = (ub - ua) / (tb - ta), False
+        return u
+
+    def pressure_resultant(self, t, u):
+        """Total (radial, axial) force of the fluid pressure on the seal (N)."""
+        F = self.load.forces(t, u)
+        return float(F[:, 0].sum() + F[:, 2].sum()), float(F[:, 1].sum() + F[:, 3].sum())
 
     def contact_profile(self, t, u):
         """Along the rod side, by z: current axial position y (mm), gap h, contact pressure."""
@@ -193,11 +247,30 @@ def run_seal(scene, writer, comm):
     res = model.results(t_end, u)
     y, h, p = model.contact_profile(t_end, u)
     writer.profile(t_end, {"y": y, "h": h, "p_contact": p})
+    counters = [model.problem.counters]
+    p_in = scene.fluid.p_in
+    if p_in != 0.0:
+        say(f"mounted: rod force {res['contact_force_total']:.6g} N; pressurising to "
+            f"{p_in:g} MPa", force=True)
+        t0, t_end = t_end, 2 * t_end
+        u = model.pressurise(u, p_in, t0=t0, t_hold=t_end, dt0=mount.dt, comm=comm,
+                             on_step=on_step)
+        counters.append(model.problem.counters)
+        mounted, res = res, model.results(t_end, u)
+        res["mounted"] = mounted
+        fr, fz = model.pressure_resultant(t_end, u)
+        res["pressure_force_radial"], res["pressure_force_axial"] = fr, fz
+        res["wetted_boundary_fraction"] = float(model.load.wet.mean())
+        y, h, p = model.contact_profile(t_end, u)
+        writer.profile(t_end, {"y": y, "h": h, "p_contact": p})
     if writer.root:
         write_fields(str(writer.dir / "fields.xdmf"), model, u)
-    c = model.problem.counters
+    c = type(counters[0])(*[sum(getattr(k, f) for k in counters)
+                            for f in ("steps", "rejected", "newton", "linear", "residuals",
+                                      "jacobians")])
     summary = {
-        "scene": scene.name, "source": scene.source, "analysis": "mount",
+        "scene": scene.name, "source": scene.source,
+        "analysis": "mount + pressurise" if p_in != 0.0 else "mount",
         "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
         "unknowns": model.n, "ranks": comm.getSize(),
         "wall_time_s": time.perf_counter() - t_wall,
