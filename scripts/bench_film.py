@@ -20,7 +20,7 @@ sys.path.insert(0, str(ROOT / "tests"))
 from closed_forms import slider_pressure  # noqa: E402
 from sealts.problem.film_run import solve_steady_film  # noqa: E402
 from sealts.scene import load_scene  # noqa: E402
-from sealts.scene.schema import _replace  # noqa: E402
+from dataclasses import replace as _replace  # noqa: E402
 
 
 def run(scheme, n, repeat):

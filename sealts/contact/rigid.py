@@ -106,6 +106,11 @@ class GrooveContact(Term):
         pz, dpz = softplus_penalty(zb - z, self.k, self.delta)
         return pb, dpb, pa, dpa, pz, dpz
 
+    def node_pressures(self, t, u):
+        """Largest wall pressure (bottom or side wall) at each of ``nodes``, MPa."""
+        pb, _, pa, _, pz, _ = self._walls(t, u)
+        return np.maximum(np.maximum(pb, pa), pz)
+
     def reactions(self, t, u):
         """Total force on the seal from the bottom (radial, inward < 0) and each side wall."""
         pb, _, pa, _, pz, _ = self._walls(t, u)

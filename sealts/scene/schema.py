@@ -6,7 +6,7 @@ in a ``[petsc]`` table (``ts_type = "bdf"`` for ``-ts_type bdf``); options given
 command line win over it.
 """
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 
@@ -257,13 +257,8 @@ def scene_from_table(table, source="<table>", base=None):
     _check_consistency(scene, base)
     film = scene.film
     if film.table and not Path(film.table).is_absolute():
-        film = _replace(film, table=str((base / film.table).resolve()))
-    return _replace(scene, petsc=petsc, source=source, film=film)
-
-
-def _replace(obj, **kw):
-    import dataclasses
-    return dataclasses.replace(obj, **kw)
+        film = replace(film, table=str((base / film.table).resolve()))
+    return replace(scene, petsc=petsc, source=source, film=film)
 
 
 def load_scene(path):

@@ -64,8 +64,7 @@ class PressureLoad(Term):
         self.wet = wet
 
     def _geometry(self, u):
-        x = self.X + u.reshape(-1, 2)[: self.X.shape[0]] if u.size >= 2 * self.X.shape[0] \
-            else self.X
+        x = self.X + u[: 2 * self.X.shape[0]].reshape(-1, 2)
         a, b = self.edges[:, 0], self.edges[:, 1]
         return x[a], x[b]
 
