@@ -199,3 +199,15 @@ def test_axisymmetric_far_from_axis_is_plane_strain():
     ps = deflection(False, 1e4)
     ax = deflection(True, 1e4)
     assert np.abs(ax - ps).max() < 2e-3 * np.abs(ps).max()
+
+
+def test_free_thermal_expansion_is_stress_free_and_uniform():
+    """A ring free but for axial rollers on its lower face, heated by dT: it grows uniformly,
+    u = alpha dT X (Eq. 3-5), the exact stress-free state."""
+    mat = NeoHooke(c10=1.064, d1=0.001, alpha_th=2e-4, d_theta=40.0)
+    X, conn, grid = rectangle(25.0, 27.0, 0.0, 2.0, 4, 4)
+    term = SolidTerm(X, conn, mat, True, heating=lambda t: t)
+    bottom = grid[0]
+    u, _ = solve_static(term, 2 * X.shape[0], 2 * bottom + 1, np.zeros(bottom.size))
+    eps = 2e-4 * 40.0
+    assert np.abs(u - eps * X.ravel()).max() < 1e-9

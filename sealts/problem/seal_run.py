@@ -34,7 +34,7 @@ class SealModel:
         self.mesh, self.material, self.axisym = mesh, material, axisym
         X = mesh.X
         self.n = 2 * X.shape[0]
-        self.solid = SolidTerm(X, mesh.conn, material, axisym)
+        self.solid = SolidTerm(X, mesh.conn, material, axisym, heating=ramp)
         chain = mesh.chain("rod_side")
         r_out = X[:, 0].max()
         r_in = X[chain, 0].min()
@@ -108,9 +108,7 @@ class SealModel:
     def node_contact_pressure(self, t, u):
         """Largest contact pressure (groove walls, rod) at every node, MPa (0 off the walls)."""
         pc = np.zeros(self.mesh.X.shape[0])
-        g = self.groove
-        pb, _, pa, _, pz, _ = g._walls(t, u)
-        pc[g.nodes] = np.maximum(np.maximum(pb, pa), pz)
+        pc[self.groove.nodes] = self.groove.node_pressures(t, u)
         p_rod, _ = self.rod.pressure(t, u)
         np.maximum.at(pc, self.rod.chain, p_rod)
         return pc
@@ -167,7 +165,7 @@ class SealModel:
         # carry (zero when the final static solve succeeded)
         stab = self.stab.forces(self.udot)
         out["stabilisation_share"] = float(np.abs(stab).max()
-                                           / max(np.abs(self.rod.forces(t, u)).max(), 1e-300))
+                                           / max(np.abs(f_rod).max(), 1e-300))
         out["static_equilibrium"] = self.static
         return out
 

@@ -25,7 +25,11 @@ class NeoHooke:
 
     @property
     def j_th(self):
-        return (1.0 + self.alpha_th * self.d_theta) ** 3
+        return self.j_th_at(1.0)
+
+    def j_th_at(self, fraction):
+        """Thermal volume ratio with the temperature rise scaled by ``fraction``."""
+        return (1.0 + self.alpha_th * self.d_theta * fraction) ** 3
 
     @property
     def shear_modulus(self):
@@ -37,10 +41,13 @@ class NeoHooke:
 
 
 class SolidTerm(Term):
-    def __init__(self, X, conn, material, axisym, offset=0):
+    def __init__(self, X, conn, material, axisym, offset=0, heating=lambda t: 1.0):
+        """``heating(t)``: the fraction of the temperature rise applied at time t (a mounting
+        step ramps it with the interference, so a warm seal does not start inside a wall)."""
         self.X = np.ascontiguousarray(X, float)
         self.conn = np.ascontiguousarray(conn, np.int64)
         self.material, self.axisym, self.off = material, bool(axisym), offset
+        self.heating = heating
         self.nn = self.X.shape[0]
         self.W, self.B, self.R = gauss_operators(self.X, self.conn, self.axisym)
         self.dofs = element_dofs(self.conn) + offset
@@ -48,24 +55,25 @@ class SolidTerm(Term):
         self.cols = np.tile(self.dofs, (1, 8)).ravel()
         self._cache_key = None
 
-    def _evaluate(self, u):
-        key = (u.ctypes.data, hash(u[self.off:self.off + 2 * self.nn].tobytes()))
+    def _evaluate(self, u, t=None):
+        j_th = self.material.j_th if t is None else self.material.j_th_at(self.heating(t))
+        us = np.ascontiguousarray(u[self.off:self.off + 2 * self.nn])
+        key = (j_th, hash(us.tobytes()))
         if key != self._cache_key:
             m = self.material
-            us = np.ascontiguousarray(u[self.off:self.off + 2 * self.nn])
-            self._out = element_forces(us, self.conn, self.W, self.B, m.c10, m.d1, m.j_th)
+            self._out = element_forces(us, self.conn, self.W, self.B, m.c10, m.d1, j_th)
             self._cache_key = key
         return self._out
 
     def add_residual(self, t, u, udot, f):
-        r, _, _, ok, *_ = self._evaluate(u)
+        r, _, _, ok, *_ = self._evaluate(u, t)
         if not ok:
             f[:] = np.nan
             return
         f += np.bincount(self.dofs.ravel(), r.ravel(), minlength=f.size)
 
     def jacobian_values(self, t, u, udot, shift):
-        return self._evaluate(u)[1].ravel()
+        return self._evaluate(u, t)[1].ravel()
 
     def energy(self, u):
         return self._evaluate(u)[2]
