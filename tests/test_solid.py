@@ -16,7 +16,7 @@ from sealts.mesh.structured import quad_patch, rectangle
 from sealts.problem import Constraints, Problem
 from sealts.solid.loads import NodalForces
 from sealts.solid.q1p0 import element_dofs, element_forces, gauss_operators
-from sealts.solid.term import NeoHooke, SolidTerm
+from sealts.solid.term import Hyperelastic, NeoHooke, SolidTerm
 
 RUBBER = NeoHooke(c10=1.064, d1=0.001)  # the paper's EPDM, K/G ~ 940
 FD_REL = 1e-8
@@ -24,7 +24,8 @@ FD_REL = 1e-8
 
 @pytest.mark.parametrize("axisym", [True, False])
 @pytest.mark.parametrize("j_th", [1.0, 1.03])
-def test_element_residual_and_tangent_against_finite_differences(axisym, j_th):
+@pytest.mark.parametrize("c01", [0.0, 0.4], ids=["neo-hooke", "mooney-rivlin"])
+def test_element_residual_and_tangent_against_finite_differences(axisym, j_th, c01):
     X = np.array([[1.0, 0.0], [2.0, 0.1], [2.2, 1.0], [0.9, 1.2], [3.0, 0.2], [3.1, 1.1]])
     conn = np.array([[0, 1, 2, 3], [1, 4, 5, 2]])
     W, B, _ = gauss_operators(X, conn, axisym)
@@ -32,7 +33,7 @@ def test_element_residual_and_tangent_against_finite_differences(axisym, j_th):
     u = np.random.default_rng(1).uniform(-0.1, 0.1, 12)
 
     def evaluate(u):
-        r, K, E, ok, *_ = element_forces(u, conn, W, B, 1.064, 0.001, j_th)
+        r, K, E, ok, *_ = element_forces(u, conn, W, B, 1.064, c01, 0.001, j_th)
         g = np.bincount(dofs.ravel(), r.ravel(), minlength=12)
         Kg = np.zeros((12, 12))
         for e in range(2):
@@ -60,7 +61,7 @@ def test_inverted_element_is_reported():
     W, B, _ = gauss_operators(X, conn, True)
     u = np.zeros(8)
     u[2] = -2.0  # node 1 pulled through node 0
-    assert not element_forces(u, conn, W, B, 1.0, 0.001, 1.0)[3]
+    assert not element_forces(u, conn, W, B, 1.0, 0.0, 0.001, 1.0)[3]
 
 
 def solve_static(term, n, fixed, values, loads=()):
@@ -92,11 +93,14 @@ def test_patch_test_homogeneous_deformation_is_exact(axisym):
     assert np.abs(u - exact).max() < 1e-10
 
 
-def neo_hooke_stress(l1, l2, l3, c10=1.064, d1=0.001):
-    """Principal Cauchy stresses of compressible Neo-Hooke for stretches l1, l2, l3."""
+def hyperelastic_stress(l1, l2, l3, c10=1.064, d1=0.001, c01=0.0):
+    """Principal Cauchy stresses of compressible Mooney-Rivlin (Neo-Hooke for c01 = 0) for
+    stretches l1, l2, l3: sigma = (2/J) dev[(C10 + C01 I1bar) bbar - C01 bbar^2] + U'(J) I,
+    bbar = J^-2/3 b."""
     J = l1 * l2 * l3
-    b = np.array([l1, l2, l3]) ** 2
-    return 2 * c10 * J ** (-5 / 3) * (b - b.sum() / 3) + 2 / d1 * (J - 1)
+    bb = J ** (-2 / 3) * np.array([l1, l2, l3]) ** 2
+    s = (c10 + c01 * bb.sum()) * bb - c01 * bb**2
+    return 2 / J * (s - s.sum() / 3) + 2 / d1 * (J - 1)
 
 
 def bisect(f, a, b):
@@ -109,18 +113,23 @@ def bisect(f, a, b):
     return 0.5 * (a + b)
 
 
-def test_uniaxial_stretch_of_a_cylinder():
+MOONEY = Hyperelastic(c10=0.8, d1=0.001, c01=0.3)
+
+
+@pytest.mark.parametrize("mat", [RUBBER, MOONEY], ids=["neo-hooke", "mooney-rivlin"])
+def test_uniaxial_stretch_of_a_cylinder(mat):
     """Axisymmetric cylinder r < 1, 0 < z < 1 stretched to lambda along z, free mantle."""
+    law = dict(c10=mat.c10, d1=mat.d1, c01=mat.c01)
     lam = 1.3
     X, conn, grid = rectangle(0.0, 1.0, 0.0, 1.0, 4, 4)
     bottom, top, axis = grid[0], grid[-1], grid[:, 0]
     fixed = np.concatenate([2 * bottom + 1, 2 * top + 1, 2 * axis])
     values = np.concatenate([0 * bottom, (lam - 1) * np.ones(top.size), 0 * axis])
     fixed, idx = np.unique(fixed, return_index=True)
-    term = SolidTerm(X, conn, RUBBER, True)
+    term = SolidTerm(X, conn, mat, True)
     u, problem = solve_static(term, 2 * X.shape[0], fixed, values[idx])
-    lt = bisect(lambda x: neo_hooke_stress(x, lam, x)[0], 0.5, 1.0)
-    s_zz = neo_hooke_stress(lt, lam, lt)[1]
+    lt = bisect(lambda x: hyperelastic_stress(x, lam, x, **law)[0], 0.5, 1.0)
+    s_zz = hyperelastic_stress(lt, lam, lt, **law)[1]
     # lateral contraction and axial force (reaction on the top face) against the closed form
     assert u[2 * grid[0, -1]] == pytest.approx(lt - 1.0, rel=1e-9)
     f_int = np.zeros(u.size)
@@ -140,9 +149,9 @@ def test_equibiaxial_stretch_of_a_plate():
     values = np.concatenate([(lam - 1) * X[:, 0], 0 * bottom])
     term = SolidTerm(X, conn, RUBBER, True)
     u, _ = solve_static(term, 2 * X.shape[0], fixed, values)
-    lz = bisect(lambda x: neo_hooke_stress(lam, x, lam)[1], 0.3, 1.0)
+    lz = bisect(lambda x: hyperelastic_stress(lam, x, lam)[1], 0.3, 1.0)
     assert u[2 * grid[-1, 0] + 1] == pytest.approx(0.5 * (lz - 1.0), rel=1e-9)
-    s_rr = neo_hooke_stress(lam, lz, lam)[0]
+    s_rr = hyperelastic_stress(lam, lz, lam)[0]
     f_int = np.zeros(u.size)
     term.add_residual(0.0, u, None, f_int)
     outer = grid[:, -1]

@@ -2,7 +2,7 @@
 
 Total Lagrangian, axisymmetric (r, z) or plane strain (x, y). The element energy is
 
-    W_e(u) = sum_g w_g psi_iso(F_g) + V_e U(theta_e),
+    W_e(u) = sum_g w_g psi_iso(F_g) + V_e U(theta_e),   psi_iso Neo-Hooke or Mooney-Rivlin,
     theta_e = v_e / V_e,  v_e = sum_g w_g J_g,  V_e = sum_g w_g,
 
 the Simo-Taylor-Pister mean-dilatation form of the u-p (hybrid) element with the element
@@ -25,6 +25,7 @@ import math
 import numba
 import numpy as np
 
+from .mooney_rivlin import isochoric_i2
 from .neo_hooke import det_and_derivatives, isochoric, volumetric
 
 _G = 1.0 / math.sqrt(3.0)
@@ -98,9 +99,10 @@ def gauss_operators(X, conn, axisym):
 
 
 @numba.njit(cache=True)
-def element_forces(u, conn, W, B, c10, d1, j_th):
+def element_forces(u, conn, W, B, c10, c01, d1, j_th):
     """Internal forces r (ne, 8), tangents K (ne, 8, 8) and energy of all elements.
 
+    ``c01 = 0`` is Neo-Hooke (the I2 term is skipped), otherwise Mooney-Rivlin.
     Returns also the Gauss-point f (ne, 4, 5), P (ne, 4, 5) and element pressure U'(theta)
     and dilatation theta for output and checks. A non-positive J anywhere gives
     ``ok = False`` (inverted element): the caller rejects the Newton step.
@@ -135,6 +137,11 @@ def element_forces(u, conn, W, B, c10, d1, j_th):
                 ok = False
                 J = 1e-300
             psi, P, A = isochoric(f, c10)
+            if c01 != 0.0:
+                psi2, P2, A2 = isochoric_i2(f, c01)
+                psi += psi2
+                P += P2
+                A += A2
             w = W[e, g]
             energy += w * psi
             _bt_v(Bg, P, r[e], w)

@@ -15,13 +15,15 @@ from .q1p0 import element_dofs, element_forces, gauss_operators
 
 
 @dataclass(frozen=True)
-class NeoHooke:
-    """Compressible Neo-Hooke (Eq. 1-5): C10 (MPa), D1 (mm^2/N), thermal expansion."""
+class Hyperelastic:
+    """Compressible Mooney-Rivlin (C01 > 0) or Neo-Hooke (C01 = 0, Eq. 1-5): C10, C01 (MPa),
+    D1 (mm^2/N), thermal expansion."""
 
     c10: float
     d1: float
     alpha_th: float = 0.0   # 1/K
     d_theta: float = 0.0    # K, temperature above the reference
+    c01: float = 0.0        # MPa
 
     @property
     def j_th(self):
@@ -33,11 +35,16 @@ class NeoHooke:
 
     @property
     def shear_modulus(self):
-        return 2.0 * self.c10
+        return 2.0 * (self.c10 + self.c01)
 
     @property
     def bulk_modulus(self):
         return 2.0 / self.d1
+
+
+def NeoHooke(c10, d1, alpha_th=0.0, d_theta=0.0):
+    """Compressible Neo-Hooke (paper Eq. 1-5)."""
+    return Hyperelastic(c10, d1, alpha_th, d_theta)
 
 
 class SolidTerm(Term):
@@ -61,7 +68,8 @@ class SolidTerm(Term):
         key = (j_th, hash(us.tobytes()))
         if key != self._cache_key:
             m = self.material
-            self._out = element_forces(us, self.conn, self.W, self.B, m.c10, m.d1, j_th)
+            self._out = element_forces(us, self.conn, self.W, self.B, m.c10, m.c01, m.d1,
+                                       j_th)
             self._cache_key = key
         return self._out
 

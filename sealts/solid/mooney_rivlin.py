@@ -1,0 +1,56 @@
+"""The second-invariant term of Mooney-Rivlin, on the five F entries of :mod:`.neo_hooke`.
+
+    psi = C10 (I1bar - 3) + C01 (I2bar - 3) + U(J),   I2bar = J^(-4/3) I2,
+
+(Neo-Hooke, paper Eq. 1, is C01 = 0). For F = [[F11, F12, 0], [F21, F22, 0], [0, 0, F33]],
+C = F^T F is block diagonal, and its second principal invariant is
+
+    I2 = a^2 + F33^2 q,   a = F11 F22 - F12 F21,   q = F11^2 + F12^2 + F21^2 + F22^2.
+
+Small-strain shear modulus G = 2 (C10 + C01). This module gives C01 (I2bar - 3) with its
+gradient and Hessian in f = (F11, F12, F21, F22, F33); the element kernel adds them to the
+Neo-Hooke part and skips them when C01 = 0.
+"""
+import numba
+import numpy as np
+
+from .neo_hooke import det_and_derivatives
+
+
+@numba.njit(cache=True)
+def isochoric_i2(f, c01):
+    """C01 (J^-4/3 I2 - 3), its gradient (5) and Hessian (5x5) in f."""
+    J, dJ, HJ = det_and_derivatives(f)
+    F11, F12, F21, F22, F33 = f[0], f[1], f[2], f[3], f[4]
+    a = F11 * F22 - F12 * F21
+    q = F11 * F11 + F12 * F12 + F21 * F21 + F22 * F22
+    I2 = a * a + F33 * F33 * q
+    da = np.array([F22, -F21, -F12, F11, 0.0])
+    dI2 = 2.0 * a * da
+    for i in range(4):
+        dI2[i] += 2.0 * F33 * F33 * f[i]
+    dI2[4] = 2.0 * F33 * q
+    HI2 = np.zeros((5, 5))
+    for i in range(5):
+        for k in range(5):
+            HI2[i, k] = 2.0 * da[i] * da[k]
+    HI2[0, 3] += 2.0 * a
+    HI2[3, 0] += 2.0 * a
+    HI2[1, 2] -= 2.0 * a
+    HI2[2, 1] -= 2.0 * a
+    for i in range(4):
+        HI2[i, i] += 2.0 * F33 * F33
+        HI2[i, 4] += 4.0 * F33 * f[i]
+        HI2[4, i] += 4.0 * F33 * f[i]
+    HI2[4, 4] += 2.0 * q
+    g = J ** (-4.0 / 3.0)
+    g1 = -(4.0 / 3.0) * g / J                       # dg/dJ
+    g2 = (28.0 / 9.0) * g / (J * J)                 # d2g/dJ2
+    psi = c01 * (g * I2 - 3.0)
+    P = c01 * (g * dI2 + I2 * g1 * dJ)
+    A = np.empty((5, 5))
+    for i in range(5):
+        for k in range(5):
+            A[i, k] = c01 * (g * HI2[i, k] + g1 * (dJ[i] * dI2[k] + dI2[i] * dJ[k])
+                             + I2 * (g2 * dJ[i] * dJ[k] + g1 * HJ[i, k]))
+    return psi, P, A
