@@ -19,7 +19,12 @@ the smooth penalty
 (C-infinity; p ~ k |g| inside the wall, exponentially small outside), times the node's
 reference tributary area. With k = ``penalty`` (MPa/mm) the penetration under a wall pressure
 p is about p / k: 1e4 MPa/mm allows 0.1 um per MPa, against an O-ring squeeze of 0.63 mm.
-Groove corner radii are not modelled yet (sharp corners).
+
+Groove corner radius rho (optional): the bottom corners are quarter circles centred at
+c_a = (r_G - rho, z_a + rho) and c_b = (r_G - rho, z_b - rho). A node in a corner's square
+(r > r_G - rho and z beyond the centre) feels that arc instead of the bottom and the side
+wall: g = rho - |x - c|, force p(g) towards c. The gap and its normal are continuous across
+the square's edges, where the arc meets the flat walls. rho = 0 gives sharp corners.
 """
 import numpy as np
 
@@ -83,47 +88,81 @@ class RodContact(Term):
 
 
 class GrooveContact(Term):
-    """Frictionless groove bottom (r <= r_bottom(t)) and side walls (z_a(t) <= z <= z_b(t))."""
+    """Frictionless groove bottom (r <= r_bottom(t)) and side walls (z_a(t) <= z <= z_b(t)),
+    with bottom corners rounded to ``corner_radius``."""
 
     def __init__(self, X, nodes, tributary, axisym, r_bottom, z_walls, penalty=1e4,
-                 delta=1e-4, offset=0, depth=1.0):
+                 delta=1e-4, offset=0, depth=1.0, corner_radius=0.0):
         self.X, self.nodes = X, np.asarray(nodes)
         w = tributary[self.nodes] * (2 * np.pi * X[self.nodes, 0] if axisym else depth)
         self.w = w
         self.r_bottom, self.z_walls = r_bottom, z_walls
-        self.k, self.delta = penalty, delta
+        self.k, self.delta, self.rho = penalty, delta, corner_radius
         self.ur = offset + 2 * self.nodes
         self.uz = offset + 2 * self.nodes + 1
-        self.rows = np.concatenate([self.ur, self.uz, self.uz])
-        self.cols = self.rows.copy()
+        # a 2x2 block per node: (r, r), (r, z), (z, r), (z, z)
+        self.rows = np.concatenate([self.ur, self.ur, self.uz, self.uz])
+        self.cols = np.concatenate([self.ur, self.uz, self.ur, self.uz])
 
-    def _walls(self, t, u):
+    def _evaluate(self, t, u):
+        """Per node: contact pressure of each surface, the force on the seal split into
+        (bottom radial, wall a axial, wall b axial) and its 2x2 stiffness d(-force)/dx."""
         r = self.X[self.nodes, 0] + u[self.ur]
         z = self.X[self.nodes, 1] + u[self.uz]
         za, zb = self.z_walls(t)
-        pb, dpb = softplus_penalty(self.r_bottom(t) - r, self.k, self.delta)
-        pa, dpa = softplus_penalty(z - za, self.k, self.delta)
-        pz, dpz = softplus_penalty(zb - z, self.k, self.delta)
-        return pb, dpb, pa, dpa, pz, dpz
+        rg = self.r_bottom(t)
+        k, dl, rho = self.k, self.delta, self.rho
+        pb, dpb = softplus_penalty(rg - r, k, dl)
+        pa, dpa = softplus_penalty(z - za, k, dl)
+        pz, dpz = softplus_penalty(zb - z, k, dl)
+        fr, fa, fb = -pb, pa, -pz            # force per unit area on the seal
+        fr_a = np.zeros_like(r)              # radial part from corner a (to the bottom)
+        Krr, Krz, Kzz = -dpb, np.zeros_like(r), -dpa - dpz
+        pmax = np.maximum(np.maximum(pb, pa), pz)
+        if rho > 0.0:
+            rc = rg - rho
+            for zc, side in ((za + rho, -1.0), (zb - rho, 1.0)):
+                inside = (r > rc) & (side * (z - zc) > 0.0)
+                if side > 0:
+                    inside &= ~((r > rc) & (z < za + rho))
+                dr_, dz_ = r[inside] - rc, z[inside] - zc
+                d = np.maximum(np.hypot(dr_, dz_), 1e-12)
+                nr, nz = dr_ / d, dz_ / d
+                pc, dpc = softplus_penalty(rho - d, k, dl)
+                idx = np.nonzero(inside)[0]
+                fr[idx] = -pc * nr          # the arc pushes the node towards its centre
+                if side < 0:
+                    fa[idx] = -pc * nz       # in place of side wall a (wall b still acts)
+                else:
+                    fb[idx] = -pc * nz
+                pmax[idx] = np.maximum(pc, pz[idx] if side < 0 else pa[idx])
+                # d(p n)/dx = -dp n n^T + p (I - n n^T) / d
+                Krr[idx] = -dpc * nr * nr + pc * (1 - nr * nr) / d
+                Krz[idx] = -dpc * nr * nz - pc * nr * nz / d
+                Kzz[idx] = -dpc * nz * nz + pc * (1 - nz * nz) / d
+                if side < 0:
+                    Kzz[idx] += -dpz[idx]
+                else:
+                    Kzz[idx] += -dpa[idx]
+        return pmax, (fr, fa, fb), (Krr, Krz, Kzz)
 
     def node_pressures(self, t, u):
-        """Largest wall pressure (bottom or side wall) at each of ``nodes``, MPa."""
-        pb, _, pa, _, pz, _ = self._walls(t, u)
-        return np.maximum(np.maximum(pb, pa), pz)
+        """Largest wall pressure (bottom, side wall or corner) at each of ``nodes``, MPa."""
+        return self._evaluate(t, u)[0]
 
     def reactions(self, t, u):
-        """Total force on the seal from the bottom (radial, inward < 0) and each side wall."""
-        pb, _, pa, _, pz, _ = self._walls(t, u)
-        return {"bottom": -float(pb @ self.w), "wall_pressure_side": float(pa @ self.w),
-                "wall_atmosphere_side": -float(pz @ self.w)}
+        """Total force on the seal (N): radial from the bottom (and the corners' radial
+        parts; inward < 0), axial from each side wall (and its corner)."""
+        _, (fr, fa, fb), _ = self._evaluate(t, u)
+        return {"bottom": float(fr @ self.w), "wall_pressure_side": float(fa @ self.w),
+                "wall_atmosphere_side": float(fb @ self.w)}
 
     def add_residual(self, t, u, udot, f):
-        pb, _, pa, _, pz, _ = self._walls(t, u)
-        # bottom pushes inward (-r), the walls push +z (at z_a) and -z (at z_b)
-        np.add.at(f, self.ur, pb * self.w)
-        np.subtract.at(f, self.uz, pa * self.w)
-        np.add.at(f, self.uz, pz * self.w)
+        _, (fr, fa, fb), _ = self._evaluate(t, u)
+        np.subtract.at(f, self.ur, fr * self.w)
+        np.subtract.at(f, self.uz, (fa + fb) * self.w)
 
     def jacobian_values(self, t, u, udot, shift):
-        _, dpb, _, dpa, _, dpz = self._walls(t, u)
-        return np.concatenate([-dpb * self.w, -dpa * self.w, -dpz * self.w])
+        _, _, (Krr, Krz, Kzz) = self._evaluate(t, u)
+        w = self.w
+        return np.concatenate([Krr * w, Krz * w, Krz * w, Kzz * w])

@@ -11,8 +11,17 @@ outward normal times length is (dz, -dr), the consistent nodal forces are
 
 Pressure penetration: the wetted set starts at the most exposed node of the pressure side
 (its smallest z) and follows the boundary loop in both directions up to the first node where
-the contact pressure from the groove or the rod exceeds the fluid pressure: there the seal
-seals. The front is updated between time steps only (``update`` from the last accepted state,
+the contact pressure p_c from the groove or the rod exceeds the fluid pressure p: there the
+seal seals. The front lies inside the last edge, where the linear interpolant of p_c - p
+between its two nodes crosses zero, so only that fraction theta of the edge is loaded:
+
+    F_a = -p 2 pi int_s0^s1 (1 - s) r(s) ds (dz, -dr),   F_b = -p 2 pi int_s0^s1 s r(s) ds (dz, -dr)
+
+with [s0, s1] = [0, theta] (or [1 - theta, 1] walking the other way). The front thus moves
+continuously: as p_c at the blocking node falls to p, theta reaches 1, and the next edge
+starts from theta = 0. (Wetting whole edges made the load jump at every node the front
+passed, and TS cut its step to one node per step: dt ~ 5e-5 on the paper's 0.01 mm mesh.)
+The front is updated between time steps only (``update`` from the last accepted state,
 called by the TS monitor), so each Newton solve sees a fixed, smooth load.
 """
 import numpy as np
@@ -40,7 +49,8 @@ class PressureLoad(Term):
         self.edges = boundary_loop(conn)
         self.m = len(self.edges)
         self.start = int(np.nonzero(self.edges[:, 0] == start_node)[0][0])
-        self.wet = np.ones(self.m, bool)
+        self.s0 = np.zeros(self.m)       # wetted part [s0, s1] of each edge, s from a to b
+        self.s1 = np.ones(self.m)
         a, b = self.edges[:, 0], self.edges[:, 1]
         da = np.stack([offset + 2 * a, offset + 2 * a + 1], 1)
         db = np.stack([offset + 2 * b, offset + 2 * b + 1], 1)
@@ -48,20 +58,52 @@ class PressureLoad(Term):
         self.rows = np.repeat(self.dofs, 4, axis=1).ravel()
         self.cols = np.tile(self.dofs, (1, 4)).ravel()
 
+    @property
+    def wet(self):
+        """Wetted fraction of each boundary edge (0 dry, 1 wet)."""
+        return self.s1 - self.s0
+
     def update(self, contact_pressure_at_nodes, p):
-        """Wet the loop from the start node both ways until contact pressure exceeds p."""
-        blocked = contact_pressure_at_nodes > p
-        wet = np.zeros(self.m, bool)
+        """Wet the loop from the start node both ways up to where p_c - p crosses zero."""
+        g = contact_pressure_at_nodes - p
+        s0, s1 = np.zeros(self.m), np.zeros(self.m)
         for step in (1, -1):
             k = self.start if step == 1 else (self.start - 1) % self.m
             for _ in range(self.m):
                 a, b = self.edges[k]
-                node = b if step == 1 else a
-                wet[k] = True
-                if blocked[node]:
-                    break
-                k = (k + step) % self.m
-        self.wet = wet
+                near, far = (a, b) if step == 1 else (b, a)
+                if g[far] <= 0.0:
+                    s0[k], s1[k] = 0.0, 1.0
+                    k = (k + step) % self.m
+                    continue
+                theta = -g[near] / (g[far] - g[near]) if g[near] < 0.0 else 0.0
+                if step == 1:
+                    s0[k], s1[k] = 0.0, theta
+                else:
+                    s0[k], s1[k] = 1.0 - theta, 1.0
+                break
+        self.s0, self.s1 = s0, s1
+
+    def _weights(self, xa, xb):
+        """2 pi int N_a r ds, 2 pi int N_b r ds over [s0, s1] (axisymmetric) or depth int N ds,
+        and their derivatives by (r_a, r_b)."""
+        s0, s1 = self.s0, self.s1
+
+        def prim(s):  # antiderivatives of (1-s)(r_a + s d) and s (r_a + s d), split by r_a, d
+            return (s - s * s / 2, s * s / 2 - s**3 / 3, s * s / 2, s**3 / 3)
+
+        A0, Ad, B0, Bd = (hi - lo for hi, lo in zip(prim(s1), prim(s0)))
+        if self.axisym:
+            c = 2 * np.pi
+            ra, rb = xa[:, 0], xb[:, 0]
+            wa = c * (A0 * ra + Ad * (rb - ra))
+            wb = c * (B0 * ra + Bd * (rb - ra))
+            dwa = c * np.stack([A0 - Ad, Ad], 1)   # by (r_a, r_b)
+            dwb = c * np.stack([B0 - Bd, Bd], 1)
+        else:
+            wa, wb = self.depth * A0, self.depth * B0
+            dwa = dwb = np.zeros((self.m, 2))
+        return wa, wb, dwa, dwb
 
     def _geometry(self, u):
         x = self.X + u[: 2 * self.X.shape[0]].reshape(-1, 2)
@@ -73,13 +115,8 @@ class PressureLoad(Term):
         p = self.pressure(t)
         xa, xb = self._geometry(u)
         dr, dz = xb[:, 0] - xa[:, 0], xb[:, 1] - xa[:, 1]
-        if self.axisym:
-            wa = 2 * np.pi * (2 * xa[:, 0] + xb[:, 0]) / 6
-            wb = 2 * np.pi * (xa[:, 0] + 2 * xb[:, 0]) / 6
-        else:
-            wa = wb = np.full(self.m, 0.5 * self.depth)
+        wa, wb, _, _ = self._weights(xa, xb)
         F = -p * np.stack([wa * dz, -wa * dr, wb * dz, -wb * dr], 1)
-        F[~self.wet] = 0.0
         return F
 
     def add_residual(self, t, u, udot, f):
@@ -90,23 +127,16 @@ class PressureLoad(Term):
         p = self.pressure(t)
         xa, xb = self._geometry(u)
         dr, dz = xb[:, 0] - xa[:, 0], xb[:, 1] - xa[:, 1]
-        m = self.m
-        K = np.zeros((m, 4, 4))  # d(-F)/d(ra, za, rb, zb)
-        if self.axisym:
-            c = 2 * np.pi / 6
-            wa = c * (2 * xa[:, 0] + xb[:, 0])
-            wb = c * (xa[:, 0] + 2 * xb[:, 0])
-            dwa = np.array([2 * c, 0, c, 0])
-            dwb = np.array([c, 0, 2 * c, 0])
-        else:
-            wa = wb = np.full(m, 0.5 * self.depth)
-            dwa = dwb = np.zeros(4)
+        K = np.zeros((self.m, 4, 4))  # d(-F)/d(ra, za, rb, zb)
+        wa, wb, dwa2, dwb2 = self._weights(xa, xb)
+        dwa = np.zeros((self.m, 4))
+        dwb = np.zeros((self.m, 4))
+        dwa[:, [0, 2]], dwb[:, [0, 2]] = dwa2, dwb2
         ddz = np.array([0, -1.0, 0, 1.0])
         ddr = np.array([-1.0, 0, 1.0, 0])
         # -F_ra = p wa dz, -F_za = -p wa dr, -F_rb = p wb dz, -F_zb = -p wb dr
-        K[:, 0] = p * (np.outer(dz, dwa) + wa[:, None] * ddz)
-        K[:, 1] = -p * (np.outer(dr, dwa) + wa[:, None] * ddr)
-        K[:, 2] = p * (np.outer(dz, dwb) + wb[:, None] * ddz)
-        K[:, 3] = -p * (np.outer(dr, dwb) + wb[:, None] * ddr)
-        K[~self.wet] = 0.0
+        K[:, 0] = p * (dz[:, None] * dwa + wa[:, None] * ddz)
+        K[:, 1] = -p * (dr[:, None] * dwa + wa[:, None] * ddr)
+        K[:, 2] = p * (dz[:, None] * dwb + wb[:, None] * ddz)
+        K[:, 3] = -p * (dr[:, None] * dwb + wb[:, None] * ddr)
         return K.ravel()
