@@ -115,6 +115,9 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[seal]\nd1 = -50.0\n", "seal.d1 must be > 0 mm (got -50)"),
     ("[groove]\ndiameter = 56.0\n", "over 35 % squeeze"),
     ("[mesh]\nh_contact = 0.1\nh_bulk = 0.05\n", "mesh.h_contact = 0.1 mm must not exceed"),
+    ("[groove]\ncorner_radius = 2.9\n", "groove.corner_radius = 2.9 mm must be below half"),
+    ("[material]\nc01 = 0.2\n", "material.c01 = 0.2 MPa needs material.model = 'mooney-rivlin'"),
+    ("[material]\nmodel = 'mooney-rivlin'\n", "material.c01 must be > 0 MPa"),
 ])
 def test_impossible_seal_geometry(extra, message):
     base = (CONFIGS / "oring_mount.toml").read_text()

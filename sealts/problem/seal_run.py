@@ -30,7 +30,8 @@ class SealModel:
     """Seal mesh + material + rod and groove, as Problem terms."""
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
-                 h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0):
+                 h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0,
+                 corner_radius=0.0):
         self.mesh, self.material, self.axisym = mesh, material, axisym
         X = mesh.X
         self.n = 2 * X.shape[0]
@@ -47,7 +48,8 @@ class SealModel:
         bnd = mesh.boundary_nodes()
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
-                                    lambda t: groove_walls, penalty=penalty, depth=depth)
+                                    lambda t: groove_walls, penalty=penalty, depth=depth,
+                                    corner_radius=corner_radius)
         # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2)
         vol = np.bincount(mesh.conn.ravel(), np.repeat(self.solid.W.sum(1) / 4.0, 4),
                           minlength=X.shape[0])
@@ -173,21 +175,53 @@ class SealModel:
 def model_from_scene(scene):
     """Mesh (cached) and SealModel for a ``model = "seal"`` scene."""
     from ..mesh.seal_mesh import ORing, RectangularRing, build_mesh
-    from ..solid.term import NeoHooke
+    from ..solid.term import Hyperelastic
     sl, gr, m, mat = scene.seal, scene.groove, scene.mesh, scene.material
     z0 = 0.0  # the groove is centred on z = 0
-    if sl.shape == "oring":
-        shape = ORing(sl.d1, sl.d2, z0)
+    if sl.shape == "file":
+        mesh = _file_mesh(sl.mesh_file, m.cache, scene.rod.radius, gr)
     else:
-        shape = RectangularRing(0.5 * sl.inner_diameter, 0.5 * sl.inner_diameter + sl.height,
-                                z0 - 0.5 * sl.width, z0 + 0.5 * sl.width)
-    mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache)
-    material = NeoHooke(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise)
+        if sl.shape == "oring":
+            shape = ORing(sl.d1, sl.d2, z0)
+        else:
+            shape = RectangularRing(0.5 * sl.inner_diameter,
+                                    0.5 * sl.inner_diameter + sl.height,
+                                    z0 - 0.5 * sl.width, z0 + 0.5 * sl.width)
+        mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache)
+    material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)
     return SealModel(mesh, material, scene.rod.radius, 0.5 * gr.diameter,
                      (z0 - 0.5 * gr.width, z0 + 0.5 * gr.width),
                      axisym=sl.symmetry == "axisymmetric", h_mix=scene.asperity.h_mix,
                      p_mix=scene.asperity.p_mix, penalty=scene.mount.penalty,
-                     stabilisation=scene.mount.stabilisation)
+                     stabilisation=scene.mount.stabilisation,
+                     corner_radius=gr.corner_radius)
+
+
+def _file_mesh(path, cache, r_rod, groove):
+    """A user's mesh file, centred axially in the groove; its geometry checked against the
+    rod and groove like the built-in shapes' (one-line SceneError naming the file)."""
+    from dataclasses import replace
+
+    from ..mesh.mesh_file import MeshFileError, read_mesh_file
+    from ..scene import SceneError
+    try:
+        mesh = read_mesh_file(path, cache)
+    except MeshFileError as e:
+        raise SceneError(f"seal.mesh_file: {e}") from None
+    X = mesh.X.copy()
+    X[:, 1] -= 0.5 * (X[:, 1].min() + X[:, 1].max())
+    r_in, r_out, width = X[:, 0].min(), X[:, 0].max(), np.ptp(X[:, 1])
+    space = 0.5 * groove.diameter - r_rod
+    if width >= groove.width:
+        raise SceneError(f"seal.mesh_file: the seal is {width:g} mm wide, not narrower than "
+                         f"groove.width = {groove.width:g} mm")
+    if r_in <= 0.0 or r_out <= r_rod or r_in >= 0.5 * groove.diameter:
+        raise SceneError(f"seal.mesh_file: the seal (r = {r_in:g} .. {r_out:g} mm) does not "
+                         "lie between rod and groove bottom")
+    if r_out - r_in > 1.35 * space:
+        raise SceneError(f"seal.mesh_file: radial size {r_out - r_in:g} mm squeezed into "
+                         f"{space:g} mm (over 35 % squeeze) cannot be mounted")
+    return replace(mesh, X=X)
 
 
 def element_stresses(model, u):

@@ -82,7 +82,10 @@ class Asperity:
 
 @dataclass(frozen=True)
 class Seal:
-    shape: str = option("oring", choices=("oring", "rectangle"), doc="seal cross-section")
+    shape: str = option("oring", choices=("oring", "rectangle", "file"),
+                        doc="seal cross-section (file: seal.mesh_file)")
+    mesh_file: str = option("", doc="shape = 'file': gmsh .msh or .geo, quads, physical curves "
+                                    "rod_side, pressure_side, groove, atmosphere_side")
     d1: float = option(50.17, unit="mm", gt=0.0, doc="O-ring inner diameter")
     d2: float = option(5.33, unit="mm", gt=0.0, doc="O-ring cord diameter")
     width: float = option(2.0, unit="mm", gt=0.0, doc="rectangle: axial width")
@@ -96,12 +99,16 @@ class Seal:
 class Groove:
     diameter: float = option(59.4, unit="mm", gt=0.0, doc="groove (bottom) diameter dG")
     width: float = option(5.6, unit="mm", gt=0.0, doc="groove width b between side walls")
+    corner_radius: float = option(0.0, unit="mm", ge=0.0,
+                                  doc="radius of the two bottom corners (0: sharp)")
 
 
 @dataclass(frozen=True)
 class Material:
-    model: str = option("neo-hooke", choices=("neo-hooke",), doc="hyperelastic law (Eq. 1)")
-    c10: float = option(1.064, unit="MPa", gt=0.0, doc="Neo-Hooke C10 (G = 2 C10)")
+    model: str = option("neo-hooke", choices=("neo-hooke", "mooney-rivlin"),
+                        doc="hyperelastic law (Eq. 1; Mooney-Rivlin adds C01 (I2bar - 3))")
+    c10: float = option(1.064, unit="MPa", gt=0.0, doc="C10 (G = 2 (C10 + C01))")
+    c01: float = option(0.0, unit="MPa", ge=0.0, doc="Mooney-Rivlin C01 (mooney-rivlin only)")
     d1: float = option(0.001, unit="mm^2/N", gt=0.0, doc="compressibility D1 (K = 2/D1)")
     alpha_th: float = option(0.0, unit="1/K", ge=0.0, doc="thermal expansion (Eq. 3-5)")
     temperature_rise: float = option(0.0, unit="K", doc="temperature above the reference")
@@ -172,12 +179,29 @@ def _check_petsc(table):
     return out
 
 
-def _check_seal_geometry(s):
+def _check_seal_geometry(s, base):
     """Impossible seal geometry: each key fine alone, not together."""
     sl, gr, rod = s.seal, s.groove, s.rod
     if 2 * rod.radius >= gr.diameter:
         raise SceneError(f"rod.radius = {rod.radius:g} mm: the rod diameter must be below "
                          f"groove.diameter = {gr.diameter:g} mm")
+    space = 0.5 * gr.diameter - rod.radius
+    if gr.corner_radius >= min(0.5 * gr.width, space):
+        raise SceneError(f"groove.corner_radius = {gr.corner_radius:g} mm must be below half "
+                         f"the groove width and the groove depth {space:g} mm")
+    if sl.shape == "file":
+        if not sl.mesh_file:
+            raise SceneError("seal.mesh_file must name a .msh or .geo file with "
+                             "seal.shape = 'file'")
+        path = Path(sl.mesh_file) if Path(sl.mesh_file).is_absolute() else base / sl.mesh_file
+        if not path.is_file():
+            raise SceneError(f"seal.mesh_file: no such file {path}")
+        if path.suffix not in (".msh", ".geo"):
+            raise SceneError(f"seal.mesh_file = {sl.mesh_file}: must be a .msh or .geo file")
+        return   # the rest is checked on the mesh itself (sealts.problem.seal_run)
+    if sl.mesh_file:
+        raise SceneError(f"seal.mesh_file is only used with seal.shape = 'file' "
+                         f"(shape is {sl.shape!r})")
     if sl.shape == "oring":
         if sl.d2 >= gr.width:
             raise SceneError(f"seal.d2 = {sl.d2:g} mm: the cord must be narrower than "
@@ -188,7 +212,6 @@ def _check_seal_geometry(s):
             raise SceneError(f"seal.width = {sl.width:g} mm must be below "
                              f"groove.width = {gr.width:g} mm")
         inner, radial = 0.5 * sl.inner_diameter, sl.height
-    space = 0.5 * gr.diameter - rod.radius
     if radial > 1.35 * space:
         raise SceneError(f"seal: radial size {radial:g} mm squeezed into {space:g} mm "
                          f"(over 35 % squeeze) cannot be mounted")
@@ -203,7 +226,14 @@ def _check_seal_geometry(s):
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
     if s.model == "seal":
-        _check_seal_geometry(s)
+        _check_seal_geometry(s, base)
+        mat = s.material
+        if mat.model == "neo-hooke" and mat.c01 != 0.0:
+            raise SceneError(f"material.c01 = {mat.c01:g} MPa needs material.model = "
+                             "'mooney-rivlin' (Neo-Hooke has no C01)")
+        if mat.model == "mooney-rivlin" and mat.c01 <= 0.0:
+            raise SceneError("material.c01 must be > 0 MPa with material.model = "
+                             "'mooney-rivlin'")
         return
     a, g, f = s.analysis, s.gap, s.film
     if a.type == "transient":
@@ -258,7 +288,10 @@ def scene_from_table(table, source="<table>", base=None):
     film = scene.film
     if film.table and not Path(film.table).is_absolute():
         film = replace(film, table=str((base / film.table).resolve()))
-    return replace(scene, petsc=petsc, source=source, film=film)
+    seal = scene.seal
+    if seal.mesh_file and not Path(seal.mesh_file).is_absolute():
+        seal = replace(seal, mesh_file=str((base / seal.mesh_file).resolve()))
+    return replace(scene, petsc=petsc, source=source, film=film, seal=seal)
 
 
 def load_scene(path):
