@@ -63,8 +63,13 @@ def test_msh_and_geo_give_the_same_mesh(tmp_path):
     assert np.allclose(a.X, b.X) and (a.conn == b.conn).all()
     for g in a.edges:
         assert len(a.edges[g]) == len(b.edges[g]) > 0
-    # the chamfer belongs to the pressure side: the rod side is straight at r = 25.05
-    assert np.allclose(a.X[a.nodes("rod_side"), 0], 25.05)
+    # the rod side is the straight part at r = 25.05 and the 0.2 mm fillet, which ends where
+    # the chamfer (pressure side) begins, at (25.10858, -0.75858)
+    rod = a.X[a.nodes("rod_side")]
+    assert rod[:, 0].min() == pytest.approx(25.05) and rod[:, 1].min() == pytest.approx(-0.75858)
+    fillet = rod[rod[:, 1] < -0.6172]
+    assert len(fillet) > 2 and np.allclose(np.hypot(fillet[:, 0] - 25.25,
+                                                    fillet[:, 1] + 0.6172), 0.2, atol=1e-4)
     # cached: a second read does not call gmsh (it returns the stored arrays)
     assert list((tmp_path / "a").glob("file-*.npz"))
 
