@@ -29,6 +29,7 @@ the square's edges, where the arc meets the flat walls. rho = 0 gives sharp corn
 import numpy as np
 
 from ..film.asperity import asperity_pressure_array
+from ..mesh.layout import vertex_dofs
 from ..problem import Term
 
 
@@ -47,14 +48,15 @@ def softplus_penalty(g, k, delta):
 
 
 class RodContact(Term):
-    def __init__(self, X, chain, r_rod, area, h_mix, p_mix, offset=0):
-        """``chain``: rod-side nodes ordered by z; ``r_rod(t)`` the rod radius."""
+    def __init__(self, X, chain, r_rod, area, h_mix, p_mix, udofs=None):
+        """``chain``: rod-side nodes ordered by z; ``r_rod(t)`` the rod radius; ``udofs``:
+        node -> (u_r, u_z) dofs (:class:`sealts.mesh.layout.Layout`)."""
         self.X, self.chain, self.r_rod, self.area = X, np.asarray(chain), r_rod, area
-        self.h_mix, self.p_mix, self.off = h_mix, p_mix, offset
+        self.h_mix, self.p_mix = h_mix, p_mix
         c = self.chain
         m = c.size
-        self.ur = offset + 2 * c
-        self.uz = offset + 2 * c + 1
+        udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
+        self.ur, self.uz = udofs[c, 0], udofs[c, 1]
         # neighbours in the chain used for L_i (one-sided at the ends)
         self.lo = np.concatenate([[0], np.arange(m - 1)])
         self.hi = np.concatenate([np.arange(1, m), [m - 1]])
@@ -92,14 +94,14 @@ class GrooveContact(Term):
     with bottom corners rounded to ``corner_radius``."""
 
     def __init__(self, X, nodes, tributary, axisym, r_bottom, z_walls, penalty=1e4,
-                 delta=1e-4, offset=0, depth=1.0, corner_radius=0.0):
+                 delta=1e-4, udofs=None, depth=1.0, corner_radius=0.0):
         self.X, self.nodes = X, np.asarray(nodes)
         w = tributary[self.nodes] * (2 * np.pi * X[self.nodes, 0] if axisym else depth)
         self.w = w
         self.r_bottom, self.z_walls = r_bottom, z_walls
         self.k, self.delta, self.rho = penalty, delta, corner_radius
-        self.ur = offset + 2 * self.nodes
-        self.uz = offset + 2 * self.nodes + 1
+        udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
+        self.ur, self.uz = udofs[self.nodes, 0], udofs[self.nodes, 1]
         # a 2x2 block per node: (r, r), (r, z), (z, r), (z, z)
         self.rows = np.concatenate([self.ur, self.ur, self.uz, self.uz])
         self.cols = np.concatenate([self.ur, self.uz, self.ur, self.uz])

@@ -15,6 +15,7 @@ import time
 import numpy as np
 
 from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
+from ..mesh.layout import Layout
 from ..problem import Problem, SolveError
 from ..solid.stabilisation import ViscousStabilisation
 from ..solid.term import SolidTerm
@@ -34,8 +35,10 @@ class SealModel:
                  corner_radius=0.0):
         self.mesh, self.material, self.axisym = mesh, material, axisym
         X = mesh.X
-        self.n = 2 * X.shape[0]
-        self.solid = SolidTerm(X, mesh.conn, material, axisym, heating=ramp)
+        self.layout = Layout(mesh)
+        self.n = self.layout.n
+        udofs = self.udofs = self.layout.udofs
+        self.solid = SolidTerm(X, mesh.conn, material, axisym, udofs=udofs, heating=ramp)
         chain = mesh.chain("rod_side")
         r_out = X[:, 0].max()
         r_in = X[chain, 0].min()
@@ -44,16 +47,16 @@ class SealModel:
         self.r_g_final = groove_radius
         self.r_g0 = max(groove_radius, r_out + 1e-3)
         area = 2 * np.pi * rod_radius if axisym else depth
-        self.rod = RodContact(X, chain, self.rod_radius, area, h_mix, p_mix)
+        self.rod = RodContact(X, chain, self.rod_radius, area, h_mix, p_mix, udofs=udofs)
         bnd = mesh.boundary_nodes()
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
                                     lambda t: groove_walls, penalty=penalty, depth=depth,
-                                    corner_radius=corner_radius)
+                                    corner_radius=corner_radius, udofs=udofs)
         # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2)
         vol = np.bincount(mesh.conn.ravel(), np.repeat(self.solid.W.sum(1) / 4.0, 4),
                           minlength=X.shape[0])
-        self.stab = ViscousStabilisation(np.arange(self.n), np.repeat(vol, 2), stabilisation)
+        self.stab = ViscousStabilisation(udofs.ravel(), np.repeat(vol, 2), stabilisation)
         self.terms = [self.solid, self.rod, self.groove, self.stab]
         # force scale G * cross-section * circumference (N); Newton converges to 1e-9 of it
         cross = float(self.solid.W.sum()) / (2 * np.pi * X[:, 0].mean() if axisym else depth)
@@ -123,7 +126,8 @@ class SealModel:
         chain_p = self.mesh.nodes("pressure_side")
         start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
         self.load = PressureLoad(self.mesh.X, self.mesh.conn,
-                                 lambda t: p_in * ramp(t - t0), self.axisym, start)
+                                 lambda t: p_in * ramp(t - t0), self.axisym, start,
+                                 udofs=self.udofs)
         self.load.update(self.node_contact_pressure(t0, u0), 0.0)
 
         def update_front(ts, step, t, u):
@@ -142,7 +146,7 @@ class SealModel:
     def contact_profile(self, t, u):
         """Along the rod side, by z: current axial position y (mm), gap h, contact pressure."""
         c = self.mesh.chain("rod_side")
-        y = self.mesh.X[c, 1] + u[2 * c + 1]
+        y = self.mesh.X[c, 1] + u[self.udofs[c, 1]]
         h = self.rod.gap(t, u)
         p, _ = self.rod.pressure(t, u)
         return y, h, p
@@ -241,7 +245,7 @@ def write_fields(path, model, u):
     import meshio
     s, mises, pressure = element_stresses(model, u)
     disp = np.zeros((model.mesh.X.shape[0], 3))
-    disp[:, :2] = u.reshape(-1, 2)
+    disp[:, :2] = u[model.udofs]
     points = np.zeros((model.mesh.X.shape[0], 3))
     points[:, :2] = model.mesh.X
     meshio.write(path, meshio.Mesh(

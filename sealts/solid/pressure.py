@@ -26,6 +26,7 @@ called by the TS monitor), so each Newton solve sees a fixed, smooth load.
 """
 import numpy as np
 
+from ..mesh.layout import vertex_dofs
 from ..problem import Term
 
 
@@ -43,7 +44,7 @@ def boundary_loop(conn):
 
 
 class PressureLoad(Term):
-    def __init__(self, X, conn, pressure, axisym, start_node, depth=1.0, offset=0):
+    def __init__(self, X, conn, pressure, axisym, start_node, depth=1.0, udofs=None):
         """``pressure(t)`` in MPa; ``start_node`` the node where the fluid arrives."""
         self.X, self.pressure, self.axisym, self.depth = X, pressure, axisym, depth
         self.edges = boundary_loop(conn)
@@ -52,8 +53,8 @@ class PressureLoad(Term):
         self.s0 = np.zeros(self.m)       # wetted part [s0, s1] of each edge, s from a to b
         self.s1 = np.ones(self.m)
         a, b = self.edges[:, 0], self.edges[:, 1]
-        da = np.stack([offset + 2 * a, offset + 2 * a + 1], 1)
-        db = np.stack([offset + 2 * b, offset + 2 * b + 1], 1)
+        self.udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
+        da, db = self.udofs[a], self.udofs[b]
         self.dofs = np.concatenate([da, db], 1)            # (m, 4): ra, za, rb, zb
         self.rows = np.repeat(self.dofs, 4, axis=1).ravel()
         self.cols = np.tile(self.dofs, (1, 4)).ravel()
@@ -106,7 +107,7 @@ class PressureLoad(Term):
         return wa, wb, dwa, dwb
 
     def _geometry(self, u):
-        x = self.X + u[: 2 * self.X.shape[0]].reshape(-1, 2)
+        x = self.X + u[self.udofs]
         a, b = self.edges[:, 0], self.edges[:, 1]
         return x[a], x[b]
 

@@ -1,6 +1,7 @@
 """The seal body as a physics term of :class:`sealts.problem.Problem`.
 
-Unknowns: nodal displacements (u_r, u_z) (mm) at ``offset``, node by node. Residual: the
+Unknowns: nodal displacements (u_r, u_z) (mm) at the dofs ``udofs`` (node -> 2 dofs, from
+:class:`sealts.mesh.layout.Layout`; 2i, 2i + 1 by default). Residual: the
 internal forces of the Q1/P0 elements (:mod:`sealts.solid.q1p0`) in N (totals over the
 circumference in axisymmetry, per mm of depth in plane strain). External loads and contacts
 are separate terms. An inverted element (J <= 0 at a Gauss point) makes the residual NaN, so
@@ -11,7 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..problem import Term
-from .q1p0 import element_dofs, element_forces, gauss_operators
+from ..mesh.layout import vertex_dofs
+from .q1p0 import element_forces, gauss_operators
 
 
 @dataclass(frozen=True)
@@ -48,23 +50,24 @@ def NeoHooke(c10, d1, alpha_th=0.0, d_theta=0.0):
 
 
 class SolidTerm(Term):
-    def __init__(self, X, conn, material, axisym, offset=0, heating=lambda t: 1.0):
+    def __init__(self, X, conn, material, axisym, udofs=None, heating=lambda t: 1.0):
         """``heating(t)``: the fraction of the temperature rise applied at time t (a mounting
         step ramps it with the interference, so a warm seal does not start inside a wall)."""
         self.X = np.ascontiguousarray(X, float)
         self.conn = np.ascontiguousarray(conn, np.int64)
-        self.material, self.axisym, self.off = material, bool(axisym), offset
+        self.material, self.axisym = material, bool(axisym)
         self.heating = heating
         self.nn = self.X.shape[0]
         self.W, self.B, self.R = gauss_operators(self.X, self.conn, self.axisym)
-        self.dofs = element_dofs(self.conn) + offset
+        self.udofs = vertex_dofs(self.nn) if udofs is None else np.asarray(udofs, np.int64)
+        self.dofs = self.udofs[self.conn].reshape(self.conn.shape[0], 8)
         self.rows = np.repeat(self.dofs, 8, axis=1).ravel()
         self.cols = np.tile(self.dofs, (1, 8)).ravel()
         self._cache_key = None
 
     def _evaluate(self, u, t=None):
         j_th = self.material.j_th if t is None else self.material.j_th_at(self.heating(t))
-        us = np.ascontiguousarray(u[self.off:self.off + 2 * self.nn])
+        us = u[self.udofs].ravel()
         key = (j_th, hash(us.tobytes()))
         if key != self._cache_key:
             m = self.material
