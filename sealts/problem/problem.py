@@ -186,10 +186,19 @@ class Problem:
             pc.setType(PETSc.PC.Type.REDUNDANT)
 
     def _default_option(self, name, value):
-        """Set an option only where the command line and the scene left it unset."""
+        """Set an option only where the command line and the scene left it unset; it is
+        removed again after the next setFromOptions (``_drop_defaults``), so it does not
+        leak into the next solver of the same process."""
         opts = PETSc.Options(self.prefix)
         if not opts.hasName(name):
             opts[name] = value
+            self._set_defaults = getattr(self, "_set_defaults", []) + [name]
+
+    def _drop_defaults(self):
+        opts = PETSc.Options(self.prefix)
+        for name in getattr(self, "_set_defaults", []):
+            opts.delValue(name)
+        self._set_defaults = []
 
     def make_snes(self):
         snes = PETSc.SNES().create(comm=self.comm)
@@ -223,7 +232,7 @@ class Problem:
         ts.setTolerances(rtol=rtol, atol=atol)
         self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
         # a run whose steps shrink below 1e-12 of its span fails instead of crawling on
-        self._default_option("ts_adapt_dt_min", repr(1e-12 * max(t_end - t0, 1e-300)))
+        self._default_option("ts_adapt_dt_min", repr(1e-12 * max(float(t_end - t0), 1e-300)))
         snes = ts.getSNES()
         snes.setType(PETSc.SNES.Type.NEWTONLS)
         snes.getLineSearch().setType(self.linesearch)
@@ -232,6 +241,7 @@ class Problem:
         if monitor is not None:
             ts.setMonitor(monitor)
         ts.setFromOptions()
+        self._drop_defaults()
         return ts
 
     # ---- solves ----------------------------------------------------------------------------
