@@ -1,0 +1,259 @@
+"""Finite-strain Prony viscoelasticity with internal variables in the DAE (paper Eq. 7-9).
+
+The model is Simo's (1987), as in ABAQUS's finite-strain viscoelasticity with a shear-only
+Prony series: the second Piola-Kirchhoff stress is
+
+    S = S_vol + S_iso(C) - sum_i g_i H_i,                                     (a)
+    tau_i A(theta) dH_i/dt + H_i = S_iso(C),                                   (b)
+
+where S_iso = F^-1 dpsi_iso/dF is the isochoric (deviatoric) stress of the *instantaneous*
+material (C10_0 = C10 / (1 - sum g), likewise C01), S_vol the elastic bulk response, and
+A(theta) the WLF shift (Eq. 11-12). At equilibrium H_i = S_iso and S = S_vol +
+(1 - sum g) S_iso, the long-term (scene) material. For a step strain at small strain the
+shear stress is G_0 g_R(t) gamma (Eq. 7). Both (a) and (b) are linear in H_i.
+
+Terms folded by :func:`sealts.solid.prony.classify`:
+
+* relaxed (H_i = S_iso): the elastic term's C10 is C10_0 (1 - sum_relaxed g);
+* frozen (H_i = H_i(0)): a fixed stress sum_frozen g_i H_i(0) in (a);
+* active: H_i, four components (11, 22, 33, 12) per Gauss point, are unknowns of the DAE
+  (the ``prony`` field of :class:`sealts.mesh.layout.Layout`), integrated by the TS with
+  the displacements.
+
+This module is the term for (a) minus its elastic part, and for (b). With P = F S in the
+five entries f = (F11, F12, F21, F22, F33) of :mod:`.neo_hooke`, P(f, H) = L(f) H, and
+
+    r_u = - sum_g w_g B_g^T L(f_g) H_tot,g,      H_tot = sum_frozen g_i H_i(0) + sum_act g_i H_i,
+    r_H,i = g_i w_g (tau_i A dH_i/dt + H_i - S_iso(f_g)),
+
+(rows of (b) scaled by g_i w_g, so they are forces times length like r_u). Jacobian blocks:
+dr_u/du = -w B^T M(H_tot) B (M = dP/df at fixed H), dr_u/dH_i = -g_i w B^T L(f),
+dr_H/du = -g_i w dS_iso/df B, and the diagonal dr_H/dH = g_i w (shift tau_i A + 1).
+"""
+import numba
+import numpy as np
+
+from ..problem import Term
+from .mooney_rivlin import isochoric_i2
+from .neo_hooke import isochoric
+
+
+@numba.njit(cache=True)
+def iso_pk2(f, c10, c01):
+    """S_iso = F^-1 dpsi_iso/dF as (S11, S22, S33, S12), and its derivative (4x5) in f."""
+    _, P, A = isochoric(f, c10)
+    if c01 != 0.0:
+        _, P2, A2 = isochoric_i2(f, c01)
+        P += P2
+        A += A2
+    a = f[0] * f[3] - f[1] * f[2]
+    i00, i01, i10, i11 = f[3] / a, -f[1] / a, -f[2] / a, f[0] / a
+    # S (2x2) = a^-1 P2x2, P2x2 = [[P0, P1], [P2, P3]]
+    s11 = i00 * P[0] + i01 * P[2]
+    s12 = i00 * P[1] + i01 * P[3]
+    s21 = i10 * P[0] + i11 * P[2]
+    s22 = i10 * P[1] + i11 * P[3]
+    S = np.array([s11, s22, P[4] / f[4], 0.5 * (s12 + s21)])
+    dS = np.zeros((4, 5))
+    for k in range(5):
+        # d(a^-1 P) = a^-1 (dP - da S), da = unit entry k (k < 4)
+        d0, d1, d2, d3 = A[0, k], A[1, k], A[2, k], A[3, k]
+        if k == 0:
+            d0 -= s11
+            d1 -= s12
+        elif k == 1:
+            d0 -= s21
+            d1 -= s22
+        elif k == 2:
+            d2 -= s11
+            d3 -= s12
+        elif k == 3:
+            d2 -= s21
+            d3 -= s22
+        dS[0, k] = i00 * d0 + i01 * d2
+        dS[1, k] = i10 * d1 + i11 * d3
+        dS[3, k] = 0.5 * (i00 * d1 + i01 * d3 + i10 * d0 + i11 * d2)
+        dS[2, k] = (A[4, k] - (S[2] if k == 4 else 0.0)) / f[4]
+    return S, dS
+
+
+@numba.njit(cache=True, inline="always")
+def _pk1(f, H):
+    """P = L(f) H for the symmetric H = (H11, H22, H33, H12)."""
+    return np.array([f[0] * H[0] + f[1] * H[3], f[0] * H[3] + f[1] * H[1],
+                     f[2] * H[0] + f[3] * H[3], f[2] * H[3] + f[3] * H[1], f[4] * H[2]])
+
+
+@numba.njit(cache=True, inline="always")
+def _pk1_by_f(H):
+    """M = dP/df at fixed H (5x5)."""
+    M = np.zeros((5, 5))
+    M[0, 0], M[0, 1] = H[0], H[3]
+    M[1, 0], M[1, 1] = H[3], H[1]
+    M[2, 2], M[2, 3] = H[0], H[3]
+    M[3, 2], M[3, 3] = H[3], H[1]
+    M[4, 4] = H[2]
+    return M
+
+
+@numba.njit(cache=True, inline="always")
+def _pk1_by_h(f):
+    """L = dP/dH (5x4)."""
+    L = np.zeros((5, 4))
+    L[0, 0], L[0, 3] = f[0], f[1]
+    L[1, 3], L[1, 1] = f[0], f[1]
+    L[2, 0], L[2, 3] = f[2], f[3]
+    L[3, 3], L[3, 1] = f[2], f[3]
+    L[4, 2] = f[4]
+    return L
+
+
+@numba.njit(cache=True)
+def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift):
+    """All elements at once. u node-major displacements; H, Hdot (ne, 4, na, 4) active
+    internal variables and rates; Hfrozen (ne, 4, 4) = sum_frozen g_i H_i(0); tau (na,) the
+    shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4), K_uu (ne, 8, 8),
+    K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na) (times the identity)."""
+    ne, na = conn.shape[0], g.shape[0]
+    ru = np.zeros((ne, 8))
+    rH = np.zeros((ne, 4, na, 4))
+    Kuu = np.zeros((ne, 8, 8))
+    KuH = np.zeros((ne, 4, na, 8, 4))
+    KHu = np.zeros((ne, 4, na, 4, 8))
+    KHH = np.zeros((ne, 4, na))
+    for e in range(ne):
+        ue = np.empty(8)
+        for a in range(4):
+            ue[2 * a] = u[2 * conn[e, a]]
+            ue[2 * a + 1] = u[2 * conn[e, a] + 1]
+        for q in range(4):
+            Bq = B[e, q]
+            w = W[e, q]
+            f = np.array([1.0, 0.0, 0.0, 1.0, 1.0])
+            for i in range(5):
+                for j in range(8):
+                    f[i] += Bq[i, j] * ue[j]
+            Htot = Hfrozen[e, q].copy()
+            for k in range(na):
+                for c in range(4):
+                    Htot[c] += g[k] * H[e, q, k, c]
+            P = _pk1(f, Htot)
+            M = _pk1_by_f(Htot)
+            for j in range(8):
+                acc = 0.0
+                for i in range(5):
+                    acc += Bq[i, j] * P[i]
+                ru[e, j] -= w * acc
+            MB = np.zeros((5, 8))
+            for i in range(5):
+                for m in range(5):
+                    if M[i, m] != 0.0:
+                        for j in range(8):
+                            MB[i, j] += M[i, m] * Bq[m, j]
+            for j in range(8):
+                for l in range(8):
+                    acc = 0.0
+                    for i in range(5):
+                        acc += Bq[i, j] * MB[i, l]
+                    Kuu[e, j, l] -= w * acc
+            if na == 0:
+                continue
+            S, dS = iso_pk2(f, c10, c01)
+            L = _pk1_by_h(f)
+            BtL = np.zeros((8, 4))
+            for j in range(8):
+                for c in range(4):
+                    acc = 0.0
+                    for i in range(5):
+                        acc += Bq[i, j] * L[i, c]
+                    BtL[j, c] = acc
+            dSB = np.zeros((4, 8))
+            for c in range(4):
+                for j in range(8):
+                    acc = 0.0
+                    for i in range(5):
+                        acc += dS[c, i] * Bq[i, j]
+                    dSB[c, j] = acc
+            for k in range(na):
+                gw = g[k] * w
+                for c in range(4):
+                    rH[e, q, k, c] = gw * (tau[k] * Hdot[e, q, k, c] + H[e, q, k, c] - S[c])
+                    for j in range(8):
+                        KuH[e, q, k, j, c] = -gw * BtL[j, c]
+                        KHu[e, q, k, c, j] = -gw * dSB[c, j]
+                KHH[e, q, k] = gw * (shift * tau[k] + 1.0)
+    return ru, rH, Kuu, KuH, KHu, KHH
+
+
+class PronyTerm(Term):
+    """Viscous stress of a Prony series (frozen and active terms) and the evolution (b) of
+    its active internal variables; see the module docstring.
+
+    ``solid``: the seal's :class:`SolidTerm` (geometry, element dofs); ``instantaneous``:
+    the material with C10_0, C01_0; ``g``, ``tau`` (s): the active terms; ``hdofs``
+    (ne, 4 * 4 * na): their dofs (Layout.prony_dofs); ``frozen`` (ne, 4, 4): the fixed stress
+    sum_frozen g_i H_i(0) or None; ``shift(t)``: the WLF factor A(theta(t))."""
+
+    def __init__(self, solid, instantaneous, g, tau, hdofs, frozen=None, shift=lambda t: 1.0):
+        self.solid, self.mat = solid, instantaneous
+        self.g, self.tau = np.asarray(g, float), np.asarray(tau, float)
+        self.shift = shift
+        ne, na = solid.conn.shape[0], self.g.size
+        self.hdofs = np.asarray(hdofs, np.int64).reshape(ne, 4, na, 4)
+        self.frozen = np.zeros((ne, 4, 4)) if frozen is None else np.asarray(frozen, float)
+        ed = solid.dofs                                            # (ne, 8)
+        hd = self.hdofs
+        shape_uH = (ne, 4, na, 8, 4)
+        rows = [np.repeat(ed, 8, axis=1).ravel(),
+                np.broadcast_to(ed[:, None, None, :, None], shape_uH).ravel(),
+                np.broadcast_to(hd[:, :, :, :, None], (ne, 4, na, 4, 8)).ravel(),
+                hd.ravel()]
+        cols = [np.tile(ed, (1, 8)).ravel(),
+                np.broadcast_to(hd[:, :, :, None, :], shape_uH).ravel(),
+                np.broadcast_to(ed[:, None, None, None, :], (ne, 4, na, 4, 8)).ravel(),
+                hd.ravel()]
+        self.rows, self.cols = np.concatenate(rows), np.concatenate(cols)
+
+    def _evaluate(self, t, u, udot, shift):
+        s = self.solid
+        us = u[s.udofs].ravel()
+        H = u[self.hdofs]
+        Hd = np.zeros_like(H) if udot is None else udot[self.hdofs]
+        A = self.shift(t)
+        return prony_kernel(us, s.conn, s.W, s.B, self.mat.c10, self.mat.c01, self.g,
+                            A * self.tau, H, Hd, self.frozen, shift)
+
+    def add_residual(self, t, u, udot, f):
+        ru, rH, *_ = self._evaluate(t, u, udot, 0.0)
+        f += np.bincount(self.solid.dofs.ravel(), ru.ravel(), minlength=f.size)
+        f[self.hdofs] += rH
+
+    def jacobian_values(self, t, u, udot, shift):
+        _, _, Kuu, KuH, KHu, KHH = self._evaluate(t, u, udot, shift)
+        return np.concatenate([Kuu.ravel(), KuH.ravel(), KHu.ravel(),
+                               np.repeat(KHH.ravel(), 4)])
+
+    def equilibrium(self, u):
+        """H_i = S_iso(u) at every Gauss point, for every active term: the relaxed start,
+        (ne, 4, na, 4); also the frozen-stress unit S_iso (ne, 4, 4)."""
+        s = self.solid
+        S = iso_stress(u[s.udofs].ravel(), s.conn, s.B, self.mat.c10, self.mat.c01)
+        return np.repeat(S[:, :, None, :], self.g.size, axis=2), S
+
+
+@numba.njit(cache=True)
+def iso_stress(u, conn, B, c10, c01):
+    """S_iso (ne, 4, 4) at every Gauss point of the displacement u (node-major)."""
+    ne = conn.shape[0]
+    out = np.empty((ne, 4, 4))
+    for e in range(ne):
+        for q in range(4):
+            f = np.array([1.0, 0.0, 0.0, 1.0, 1.0])
+            for a in range(4):
+                for d in range(2):
+                    val = u[2 * conn[e, a] + d]
+                    for i in range(5):
+                        f[i] += B[e, q, i, 2 * a + d] * val
+            S, _ = iso_pk2(f, c10, c01)
+            out[e, q] = S
+    return out
