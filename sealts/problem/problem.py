@@ -72,7 +72,7 @@ class Problem:
     """A DAE assembled from terms, solved with PETSc TS (transient) or SNES (steady)."""
 
     def __init__(self, n, terms, comm=None, prefix=None, constraints=None, linesearch="bt",
-                 snes_atol=None):
+                 snes_atol=None, fields=None):
         """``linesearch`` is the default SNES line search (the command line overrides it):
         ``bt`` for the film; ``basic`` for near-incompressible solids, where the residual
         norm is a poor merit function. Measured on a bent block with K/G ~ 940: basic 6
@@ -81,7 +81,11 @@ class Problem:
         ``snes_atol`` (units of the residual, e.g. N) makes Newton convergence absolute: the
         relative test max(atol, rtol |F0|) accepts nonsense when a poor predictor makes |F0|
         huge, which happened in quasi-static mounting (rod force 1e4 N accepted for 450 N).
-        Without it the defaults are rtol 1e-10, atol 1e-12."""
+        Without it the defaults are rtol 1e-10, atol 1e-12.
+
+        ``fields`` (name -> global dofs), with a ``prony`` field of internal variables: the
+        default linear solver becomes the exact Schur complement over the displacements
+        (``_default_linear_solver``); any ``-pc_type fieldsplit`` gets these splits."""
         self.linesearch = linesearch
         self.max_it = 50  # of a steady SNES solve
         self.snes_tol = (dict(rtol=1e-10, atol=1e-12) if snes_atol is None
@@ -91,6 +95,7 @@ class Problem:
         self.terms = list(terms)
         self.constraints = constraints
         self.prefix = prefix
+        self.fields = dict(fields or {})
         self.counters = Counters()
 
         self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
@@ -177,6 +182,9 @@ class Problem:
 
     # ---- solver set-up ---------------------------------------------------------------------
     def _default_linear_solver(self, ksp):
+        if "prony" in self.fields:
+            self._default_schur(ksp)
+            return
         ksp.setType(PETSc.KSP.Type.PREONLY)
         pc = ksp.getPC()
         if self.comm.getSize() == 1:
@@ -185,14 +193,50 @@ class Problem:
         else:
             pc.setType(PETSc.PC.Type.REDUNDANT)
 
-    def _default_option(self, name, value):
+    def _default_schur(self, ksp):
+        """Prony internal variables first, displacements second: their own block A00 is
+        diagonal, so selfp's A11 - A10 diag(A00)^-1 A01 is the exact Schur complement, LU
+        factors it, and the outer Krylov method converges in one iteration."""
+        ksp.setType(PETSc.KSP.Type.FGMRES)
+        pc = ksp.getPC()
+        pc.setType(PETSc.PC.Type.FIELDSPLIT)
+        pc.setFieldSplitType(PETSc.PC.CompositeType.SCHUR)
+        pc.setFieldSplitSchurFactType(PETSc.PC.FieldSplitSchurFactType.FULL)
+        pc.setFieldSplitSchurPreType(PETSc.PC.FieldSplitSchurPreType.SELFP)
+        # the split solvers exist only at set-up, so their defaults stay in the options
+        # database (scoped by this problem's prefix)
+        serial = self.comm.getSize() == 1
+        defaults = [("fieldsplit_prony_ksp_type", "preonly"),
+                    ("fieldsplit_prony_pc_type", "jacobi"),
+                    ("fieldsplit_displacement_ksp_type", "preonly"),
+                    ("fieldsplit_displacement_pc_type", "lu" if serial else "redundant")]
+        if serial:
+            defaults.append(("fieldsplit_displacement_pc_factor_mat_solver_type", "umfpack"))
+        for name, value in defaults:
+            self._default_option(name, value, keep=True)
+
+    def _set_splits(self, ksp):
+        """Hand the fields to a fieldsplit preconditioner (the rank's own dofs of each)."""
+        pc = ksp.getPC()
+        if not self.fields or pc.getType() != PETSc.PC.Type.FIELDSPLIT:
+            return
+        order = sorted(self.fields, key=lambda k: k != "prony")
+        splits = []
+        for name in order:
+            d = np.asarray(self.fields[name], PETSc.IntType)
+            d = d[(d >= self.rstart) & (d < self.rend)]
+            splits.append((name, PETSc.IS().createGeneral(d, comm=self.comm)))
+        pc.setFieldSplitIS(*splits)
+
+    def _default_option(self, name, value, keep=False):
         """Set an option only where the command line and the scene left it unset; it is
         removed again after the next setFromOptions (``_drop_defaults``), so it does not
         leak into the next solver of the same process."""
         opts = PETSc.Options(self.prefix)
         if not opts.hasName(name):
             opts[name] = value
-            self._set_defaults = getattr(self, "_set_defaults", []) + [name]
+            if not keep:
+                self._set_defaults = getattr(self, "_set_defaults", []) + [name]
 
     def _drop_defaults(self):
         opts = PETSc.Options(self.prefix)
@@ -211,6 +255,7 @@ class Problem:
         snes.setTolerances(max_it=self.max_it, **self.snes_tol)
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
+        self._set_splits(snes.getKSP())
         return snes
 
     def make_ts(self, t0, t_end, dt0, monitor=None, rtol=1e-6, atol=1e-8):
@@ -242,6 +287,7 @@ class Problem:
             ts.setMonitor(monitor)
         ts.setFromOptions()
         self._drop_defaults()
+        self._set_splits(ts.getSNES().getKSP())
         return ts
 
     # ---- solves ----------------------------------------------------------------------------
