@@ -52,6 +52,7 @@ class PressureLoad(Term):
         self.start = int(np.nonzero(self.edges[:, 0] == start_node)[0][0])
         self.s0 = np.zeros(self.m)       # wetted part [s0, s1] of each edge, s from a to b
         self.s1 = np.ones(self.m)
+        self.reach = None                # the two fronts' positions (edges from the start)
         a, b = self.edges[:, 0], self.edges[:, 1]
         self.udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
         da, db = self.udofs[a], self.udofs[b]
@@ -64,25 +65,43 @@ class PressureLoad(Term):
         """Wetted fraction of each boundary edge (0 dry, 1 wet)."""
         return self.s1 - self.s0
 
-    def update(self, contact_pressure_at_nodes, p):
-        """Wet the loop from the start node both ways up to where p_c - p crosses zero."""
+    def _reach(self, g, step):
+        """How far the fluid gets from the start, one way round: the number of whole wet
+        edges plus the wet fraction of the edge where p_c - p = g crosses zero."""
+        k = self.start if step == 1 else (self.start - 1) % self.m
+        for n in range(self.m):
+            a, b = self.edges[k]
+            near, far = (a, b) if step == 1 else (b, a)
+            if g[far] > 0.0:
+                return n + (-g[near] / (g[far] - g[near]) if g[near] < 0.0 else 0.0)
+            k = (k + step) % self.m
+        return float(self.m)
+
+    def update(self, contact_pressure_at_nodes, p, max_advance=None):
+        """Wet the loop from the start node both ways up to where p_c - p crosses zero.
+
+        ``max_advance`` (edges): how far each front may advance in one update. A region
+        whose contact pressure falls below p all at once would otherwise flood in one
+        step, a load jump that no step size can soften (met in the viscoelastic hold)."""
         g = contact_pressure_at_nodes - p
+        reach = [self._reach(g, 1), self._reach(g, -1)]
+        if max_advance is not None and self.reach is not None:
+            reach = [min(r, old + max_advance) for r, old in zip(reach, self.reach)]
+        self.reach = reach
         s0, s1 = np.zeros(self.m), np.zeros(self.m)
-        for step in (1, -1):
-            k = self.start if step == 1 else (self.start - 1) % self.m
-            for _ in range(self.m):
-                a, b = self.edges[k]
-                near, far = (a, b) if step == 1 else (b, a)
-                if g[far] <= 0.0:
-                    s0[k], s1[k] = 0.0, 1.0
-                    k = (k + step) % self.m
-                    continue
-                theta = -g[near] / (g[far] - g[near]) if g[near] < 0.0 else 0.0
-                if step == 1:
-                    s0[k], s1[k] = 0.0, theta
-                else:
-                    s0[k], s1[k] = 1.0 - theta, 1.0
-                break
+        for r, step in zip(reach, (1, -1)):
+            n = int(min(r, self.m))
+            first = self.start if step == 1 else (self.start - 1) % self.m
+            k = (first + step * np.arange(n)) % self.m
+            s0[k], s1[k] = 0.0, 1.0
+            frac = r - n
+            if n < self.m and frac > 0.0:
+                k = (first + step * n) % self.m
+                if s1[k] - s0[k] < 1.0:       # not already wet from the other side
+                    if step == 1:
+                        s0[k], s1[k] = 0.0, frac
+                    else:
+                        s0[k], s1[k] = 1.0 - frac, 1.0
         self.s0, self.s1 = s0, s1
 
     def _weights(self, xa, xb):
