@@ -118,6 +118,18 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[groove]\ncorner_radius = 2.9\n", "groove.corner_radius = 2.9 mm must be below half"),
     ("[material]\nc01 = 0.2\n", "material.c01 = 0.2 MPa needs material.model = 'mooney-rivlin'"),
     ("[material]\nmodel = 'mooney-rivlin'\n", "material.c01 must be > 0 MPa"),
+    ("[viscoelastic]\nprony = 'custom'\nprony_g = [0.5]\nprony_tau = [1.0, 2.0]\n",
+     "prony_g and prony_tau must be lists of the same non-zero length"),
+    ("[viscoelastic]\nprony = 'custom'\nprony_g = [0.6, 0.5]\nprony_tau = [1.0, 2.0]\n",
+     "viscoelastic.prony_g must sum to below 1 (got 1.1)"),
+    ("[viscoelastic]\nprony_g = [0.5]\n", "only used with prony = 'custom'"),
+    ("[viscoelastic]\nprony_tau = [-1.0]\n", "viscoelastic.prony_tau"),
+    ("[viscoelastic]\ntemperature = -140.0\n", "below the WLF range"),
+    ("[hold]\np_end = 5.0\n", "hold.p_end needs a viscoelastic material"),
+    ("[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\n",
+     "hold.p_end needs the pressurised state: set fluid.p_in"),
+    ("[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\nt_end = 1e-4\n"
+     "[fluid]\np_in = 1.0\n", "must lie below hold.t_end"),
 ])
 def test_impossible_seal_geometry(extra, message):
     base = (CONFIGS / "oring_mount.toml").read_text()

@@ -38,6 +38,8 @@ def plot_profiles(profiles, path):
 
 
 def plot_series(rows, path):
+    if "rod_force" in rows[0]:
+        return plot_hold_series(rows, path)
     t = np.array([r["t"] for r in rows])
     fig, ax = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
     ax[0].plot(t, [r["Q_in"] for r in rows], label="Q_in")
@@ -52,6 +54,25 @@ def plot_series(rows, path):
     ax[2].semilogy(t, [max(r["dt"], 1e-300) for r in rows], ".-")
     ax[2].set_ylabel("time step [s]")
     ax[2].set_xlabel("time t [s]")
+    for a in ax:
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_hold_series(rows, path):
+    """A seal's viscoelastic hold over log time: rod force, peak contact pressure, step."""
+    t = np.array([r["t"] for r in rows])
+    keep = t > 0
+    fig, ax = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
+    ax[0].semilogx(t[keep], np.array([r["rod_force"] for r in rows])[keep], ".-")
+    ax[0].set_ylabel("rod contact force [N]")
+    ax[1].semilogx(t[keep], np.array([r["p_contact_max"] for r in rows])[keep], ".-")
+    ax[1].set_ylabel("peak contact pressure [MPa]")
+    ax[2].loglog(t[keep], np.array([max(r["dt"], 1e-300) for r in rows])[keep], ".-")
+    ax[2].set_ylabel("time step [s]")
+    ax[2].set_xlabel("time in the hold t [s]")
     for a in ax:
         a.grid(alpha=0.3)
     fig.tight_layout()

@@ -5,6 +5,7 @@ OUTDIR/
                  (``results``) and, for transient runs, at t = 0 (``results_t0``)
   profiles.csv   long format: t, y, h, p, tau [, p_asperity, tau_solid]  (mm, MPa, s)
   series.csv     transient runs: one row per accepted step
+  hold_profiles.csv  seal scenes with a viscoelastic hold: t (s of the hold), y, h, p_contact
   profiles.png   film thickness (um) and pressure along y at each output time
   series.png     transient runs: flows, leakage and time step over time
 
@@ -28,7 +29,7 @@ class Writer:
         self._series = []
         if self.root:
             self.dir.mkdir(parents=True, exist_ok=True)
-            for name in ("profiles.csv", "series.csv", "summary.json"):
+            for name in ("profiles.csv", "series.csv", "hold_profiles.csv", "summary.json"):
                 (self.dir / name).unlink(missing_ok=True)
 
     def _csv(self, name, fields):
@@ -39,12 +40,13 @@ class Writer:
             self._files[name] = (f, w)
         return self._files[name]
 
-    def profile(self, t, prof):
+    def profile(self, t, prof, name="profiles.csv"):
         if not self.root:
             return
-        self._profiles.append((t, prof))
+        if name == "profiles.csv":
+            self._profiles.append((t, prof))
         keys = ["t"] + list(prof)
-        f, w = self._csv("profiles.csv", keys)
+        f, w = self._csv(name, keys)
         cols = [np.asarray(prof[k]) for k in prof]
         for i in range(cols[0].size):
             w.writerow(dict(zip(keys, [f"{t:.9g}"] + [f"{c[i]:.10g}" for c in cols])))

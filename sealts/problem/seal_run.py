@@ -289,6 +289,11 @@ def run_seal(scene, writer, comm):
         res["wetted_boundary_fraction"] = float(model.load.wet.mean())
         y, h, p = model.contact_profile(t_end, u)
         writer.profile(t_end, {"y": y, "h": h, "p_contact": p})
+    hold = scene.hold
+    hold_info = None
+    if hold.p_end != 0.0:
+        u, res, hold_info, hold_counters = _run_hold(model, u, scene, writer, comm, say, res)
+        counters.append(hold_counters)
     if writer.root:
         write_fields(str(writer.dir / "fields.xdmf"), model, u)
     c = type(counters[0])(*[sum(getattr(k, f) for k in counters)
@@ -296,7 +301,8 @@ def run_seal(scene, writer, comm):
                                       "jacobians")])
     summary = {
         "scene": scene.name, "source": scene.source,
-        "analysis": "mount + pressurise" if p_in != 0.0 else "mount",
+        "analysis": ("mount + pressurise + viscoelastic hold" if hold_info
+                     else "mount + pressurise" if p_in != 0.0 else "mount"),
         "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
         "unknowns": model.n, "ranks": comm.getSize(),
         "wall_time_s": time.perf_counter() - t_wall,
@@ -305,5 +311,58 @@ def run_seal(scene, writer, comm):
         "results": res,
         "units": {"length": "mm", "pressure": "MPa", "force": "N"},
     }
+    if hold_info:
+        summary["hold"] = hold_info
     writer.summary(summary)
     return summary
+
+
+def _run_hold(model, u, scene, writer, comm, say, res_pressurised):
+    """Step 3: the viscoelastic pressure step and hold (:mod:`sealts.problem.hold_run`)."""
+    from .hold_run import HoldStep
+    hold, ve = scene.hold, scene.viscoelastic
+    step = HoldStep(model, u, scene.fluid.p_in, hold.p_end, hold.t_ramp, ve, hold.t_end,
+                    comm=comm)
+    say(step.classes.describe(step.series, step.shift), force=True)
+    say(f"hold: {scene.fluid.p_in:g} -> {hold.p_end:g} MPa over {hold.t_ramp:g} s, held to "
+        f"{hold.t_end:g} s; {step.layout.n} unknowns ({len(step.classes.active)} active "
+        f"Prony terms x 16 per cell)", force=True)
+    lay = step.layout
+
+    def displacement(U):
+        return U[lay.udofs].ravel()
+
+    def on_step(ts, k, t, U):
+        ud = displacement(U)
+        y, h, p = model.contact_profile(t, ud)
+        force = float(step.rod.forces(t, ud).sum())
+        writer.series({"t": t, "dt": ts.getTimeStep(), "p_sealed": step.load.pressure(t),
+                       "rod_force": force, "p_contact_max": float(p.max()),
+                       "h_min": float(h.min()), "wetted": float(step.load.wet.mean()),
+                       "newton": ts.getSNESIterations()})
+        say(f"hold step {k:4d}  t = {t:.4g} s  dt = {ts.getTimeStep():.3g}  "
+            f"rod force = {force:.5g} N  min h = {h.min() * 1e3:.4g} um")
+
+    def on_stop(t, U):
+        y, h, p = model.contact_profile(t, displacement(U))
+        writer.profile(t, {"y": y, "h": h, "p_contact": p}, name="hold_profiles.csv")
+
+    t_end = hold.t_end
+    stops = [t for t in 10.0 ** np.arange(-6, 13) if hold.t_ramp <= t < t_end]
+    U = step.run(t_end, hold.dt, hold.rtol, stops=stops, on_step=on_step, on_stop=on_stop)
+    u = displacement(U)
+    res = model.results(t_end, u)
+    res["pressurised"] = res_pressurised
+    c = step.problem.counters
+    info = {
+        "p_from": scene.fluid.p_in, "p_to": hold.p_end, "t_end": t_end,
+        "wlf_shift": step.shift,
+        "prony_active_tau": [float(step.shift * step.series.tau[i])
+                             for i in step.classes.active],
+        "prony_relaxed": len(step.classes.relaxed), "prony_frozen": len(step.classes.frozen),
+        "prony_error_bound": step.classes.error_bound,
+        "unknowns": int(lay.n), "steps_accepted": c.steps, "steps_rejected": c.rejected,
+        "newton_iterations": c.newton, "linear_iterations": c.linear,
+        "long_term_check": step.long_term_check(U, t_end),
+    }
+    return u, res, info, c

@@ -133,6 +133,36 @@ class Mount:
 
 
 @dataclass(frozen=True)
+class Viscoelastic:
+    prony: str = option("none", choices=("none", "table2", "custom"),
+                        doc="shear relaxation (Eq. 7-9): none (long-term only), the paper's "
+                            "Table 2 (EPDM), or custom prony_g / prony_tau")
+    prony_g: list[float] = option([], gt=0.0, doc="custom: Prony weights g_i (sum below 1)")
+    prony_tau: list[float] = option([], unit="s", gt=0.0,
+                                    doc="custom: relaxation times tau_i at theta_0")
+    temperature: float = option(25.0, unit="C", doc="seal temperature theta (WLF shift)")
+    theta_0: float = option(25.0, unit="C", doc="reference temperature of the tau_i")
+    wlf_c1: float = option(7.69, doc="WLF C1 (Eq. 12; Table 2 value)")
+    wlf_c2: float = option(157.74, unit="K", gt=0.0, doc="WLF C2 (Eq. 12; Table 2 value)")
+    t_min: float = option(1e-3, unit="s", gt=0.0,
+                          doc="shortest time over which the loading changes: terms much "
+                              "faster are folded in as relaxed")
+    tol: float = option(1e-2, gt=0.0, le=1.0,
+                        doc="relative error of the relaxation modulus that folding Prony "
+                            "terms (relaxed / frozen) may cause over [t_min, hold.t_end]")
+
+
+@dataclass(frozen=True)
+class Hold:
+    p_end: float = option(0.0, unit="MPa", doc="step 3: sealed pressure stepped to from "
+                                                "fluid.p_in, then held (0: no hold step)")
+    t_ramp: float = option(1e-3, unit="s", gt=0.0, doc="duration of the pressure step")
+    t_end: float = option(1e6, unit="s", gt=0.0, doc="end of the hold")
+    dt: float = option(1e-5, unit="s", gt=0.0, doc="first time step (TS adapts it)")
+    rtol: float = option(1e-4, gt=0.0, doc="TS relative error tolerance of the hold")
+
+
+@dataclass(frozen=True)
 class Output:
     plot: bool = option(True, doc="write PNG plots")
     progress: bool = option(True, doc="print t, dt and Newton iterations while running")
@@ -155,6 +185,9 @@ class Scene:
     material: Material = option(Material(), doc="seal material, long-term (model = seal)")
     mesh: Mesh = option(Mesh(), doc="seal mesh sizes (model = seal)")
     mount: Mount = option(Mount(), doc="mounting step (model = seal)")
+    viscoelastic: Viscoelastic = option(Viscoelastic(),
+                                        doc="Prony series and WLF shift (model = seal)")
+    hold: Hold = option(Hold(), doc="viscoelastic pressure step and hold (model = seal)")
     output: Output = option(Output(), doc="what to write")
     petsc: dict = field(default_factory=dict, metadata=dict(doc="default PETSc options"))
     source: str = field(default="<embedded>", metadata=dict(doc="where the scene came from"))
@@ -223,6 +256,33 @@ def _check_seal_geometry(s, base):
                          f"mesh.h_bulk = {m.h_bulk:g} mm")
 
 
+def _check_viscoelastic(s):
+    ve, hold = s.viscoelastic, s.hold
+    if ve.prony == "custom":
+        g, tau = ve.prony_g, ve.prony_tau
+        if not g or len(g) != len(tau):
+            raise SceneError("viscoelastic.prony_g and prony_tau must be lists of the same "
+                             f"non-zero length with prony = 'custom' (got {len(g)} and "
+                             f"{len(tau)})")
+        if sum(g) >= 1.0:
+            raise SceneError(f"viscoelastic.prony_g must sum to below 1 (got {sum(g):.6g})")
+    elif ve.prony_g or ve.prony_tau:
+        raise SceneError("viscoelastic.prony_g / prony_tau are only used with "
+                         f"prony = 'custom' (prony is {ve.prony!r})")
+    if ve.wlf_c2 + ve.temperature - ve.theta_0 <= 0.0:
+        raise SceneError(f"viscoelastic.temperature = {ve.temperature:g} C is below the WLF "
+                         f"range (theta_0 - C2 = {ve.theta_0 - ve.wlf_c2:g} C)")
+    if hold.p_end != 0.0:
+        if ve.prony == "none":
+            raise SceneError("hold.p_end needs a viscoelastic material: set "
+                             "viscoelastic.prony")
+        if s.fluid.p_in == 0.0:
+            raise SceneError("hold.p_end needs the pressurised state: set fluid.p_in")
+        if hold.t_ramp >= hold.t_end or ve.t_min > hold.t_end:
+            raise SceneError(f"hold.t_ramp = {hold.t_ramp:g} s and viscoelastic.t_min = "
+                             f"{ve.t_min:g} s must lie below hold.t_end = {hold.t_end:g} s")
+
+
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
     if s.model == "seal":
@@ -234,6 +294,7 @@ def _check_consistency(s, base):
         if mat.model == "mooney-rivlin" and mat.c01 <= 0.0:
             raise SceneError("material.c01 must be > 0 MPa with material.model = "
                              "'mooney-rivlin'")
+        _check_viscoelastic(s)
         return
     a, g, f = s.analysis, s.gap, s.film
     if a.type == "transient":

@@ -1,0 +1,131 @@
+"""Step 3 of a seal scene: the viscoelastic pressure step and hold (``[hold] p_end``).
+
+From the pressurised long-term state u0 (steps 1-2), the sealed pressure steps from
+fluid.p_in to hold.p_end over hold.t_ramp and is held until hold.t_end, in real time (s),
+with the Prony material of :mod:`sealts.solid.viscoelastic`:
+
+* the start is relaxed, as ABAQUS hands over after a long-term step: every internal
+  variable is at equilibrium, H_i = S_iso(u0), so the stress is the long-term one and there
+  is no jump; the pressure step then meets the short-term stiffness (G_0 for the active
+  terms) and the seal creeps towards the long-term state;
+* terms are classified over [viscoelastic.t_min, hold.t_end] (``classify``): relaxed terms
+  soften the elastic part, frozen ones keep the fixed stress g_i S_iso(u0), active ones are
+  the ``prony`` field of the Layout and TS integrates them with the displacements;
+* the rod and groove are at their final positions; the pressure-penetration front is
+  updated after each accepted step, as in step 2.
+
+At the end, the long-term static solution at p_end (the hyperelastic material, from the
+hold's final state) is solved as well and the differences are reported
+(``long_term_check``): after a hold far beyond the longest relaxation time they vanish.
+"""
+import copy
+from dataclasses import replace
+
+import numpy as np
+
+from ..mesh.layout import Layout
+from ..solid.pressure import PressureLoad
+from ..solid.prony import TABLE2_G, TABLE2_TAU, PronySeries, classify, wlf_shift
+from ..solid.term import SolidTerm
+from ..solid.viscoelastic import PronyTerm
+from .problem import Problem, SolveError
+
+
+def prony_series(ve):
+    """The scene's Prony series and its WLF factor A(theta)."""
+    if ve.prony == "table2":
+        series = PronySeries(TABLE2_G, TABLE2_TAU)
+    else:
+        series = PronySeries(np.array(ve.prony_g), np.array(ve.prony_tau))
+    return series, float(wlf_shift(ve.temperature, ve.theta_0, ve.wlf_c1, ve.wlf_c2))
+
+
+def step_ramp(t, t_ramp):
+    s = min(max(t / t_ramp, 0.0), 1.0)
+    return s * s * (3.0 - 2.0 * s)
+
+
+class HoldStep:
+    """The DAE of the viscoelastic hold, built on a SealModel after pressurisation."""
+
+    def __init__(self, model, u0, p_from, p_to, t_ramp, ve, t_end, comm=None):
+        self.model, self.p_to = model, p_to
+        self.series, self.shift = prony_series(ve)
+        s = self.series
+        self.classes = classify(s, ve.t_min, t_end, ve.tol, shift=self.shift)
+        act, rel, frz = self.classes.active, self.classes.relaxed, self.classes.frozen
+        mat = model.material
+        self.instantaneous = replace(mat, c10=mat.c10 / s.g_inf, c01=mat.c01 / s.g_inf)
+        keep = 1.0 - s.g[rel].sum()
+        elastic = replace(self.instantaneous, c10=self.instantaneous.c10 * keep,
+                          c01=self.instantaneous.c01 * keep)
+        mesh = model.mesh
+        self.layout = lay = Layout(mesh, prony=16 * len(act))
+        assert np.array_equal(lay.udofs, model.udofs)  # vertices first: u0 maps as it is
+        X = mesh.X
+        self.solid = SolidTerm(X, mesh.conn, elastic, model.axisym, udofs=lay.udofs)
+        self.prony = PronyTerm(self.solid, self.instantaneous, s.g[act], s.tau[act],
+                               lay.prony_dofs, shift=lambda t: self.shift)
+        H0, S0 = self.prony.equilibrium(u0)
+        self.prony.frozen = s.g[frz].sum() * S0
+        # rod and groove at their final positions
+        self.rod = copy.copy(model.rod)
+        self.rod.r_rod = lambda t: model.r_rod_final
+        self.groove = copy.copy(model.groove)
+        self.groove.r_bottom = lambda t: model.r_g_final
+        old = model.load
+        self.load = PressureLoad(X, mesh.conn,
+                                 lambda t: p_from + (p_to - p_from) * step_ramp(t, t_ramp),
+                                 model.axisym, old.edges[old.start, 0], udofs=lay.udofs)
+        self.load.s0, self.load.s1, self.load.reach = old.s0.copy(), old.s1.copy(), old.reach
+        self.U0 = np.zeros(lay.n)
+        self.U0[lay.udofs] = u0[model.udofs]
+        self.U0[lay.prony_dofs] = H0.reshape(H0.shape[0], -1)
+        terms = [self.solid, self.prony, self.rod, self.groove, self.load]
+        fields = {"displacement": lay.field_dofs("displacement")}
+        if len(act):
+            fields["prony"] = lay.field_dofs("prony")
+        self.problem = Problem(lay.n, terms, comm=comm, prefix="hold_", linesearch="basic",
+                               snes_atol=1e-9 * model.force_scale, fields=fields)
+
+    def node_contact_pressure(self, t, u):
+        pc = np.zeros(self.model.mesh.X.shape[0])
+        pc[self.groove.nodes] = self.groove.node_pressures(t, u)
+        p_rod, _ = self.rod.pressure(t, u)
+        np.maximum.at(pc, self.rod.chain, p_rod)
+        return pc
+
+    def run(self, t_end, dt0, rtol, stops=(), on_step=None, on_stop=None):
+        def step(ts, k, t, U):
+            self.load.update(self.node_contact_pressure(t, U), self.load.pressure(t),
+                             max_advance=1.0)
+            if on_step is not None:
+                on_step(ts, k, t, U)
+
+        return self.problem.transient(self.U0, 0.0, t_end, dt0, stops=stops, on_step=step,
+                                      on_stop=on_stop, rtol=rtol, atol=1e-6)
+
+    def long_term_check(self, U, t_end):
+        """The long-term (hyperelastic) equilibrium at the final pressure, found from the
+        hold's end state by the quasi-static driver of steps 1-2 (stabilised pseudo-time,
+        then Newton; a bare Newton solve from there inverted elements on the 0.05 mm mesh),
+        and how far the hold's state is from it (mm, N)."""
+        m = self.model
+        u = U[self.layout.udofs].ravel()
+        tau_max = self.shift * float(self.series.tau.max())
+        if t_end < 20.0 * tau_max:
+            return {"skipped": f"hold.t_end = {t_end:g} s is not far beyond the longest "
+                               f"relaxation time {tau_max:g} s"}
+        load = copy.copy(self.load)
+        load.pressure = lambda t: self.p_to
+        try:
+            # pseudo-time 2..3 (the rod and groove of SealModel are final for t >= 1)
+            us = m._quasi_static([load], u, 2.0, 3.0, 0.05, 2.5, self.problem.comm, None)
+        except SolveError as e:
+            return {"skipped": f"the long-term static solve failed: {e}"}
+        f_hold = float(self.rod.forces(t_end, u).sum())
+        f_static = float(self.rod.forces(t_end, us).sum())
+        return {"max_displacement_difference_mm": float(np.abs(us - u).max()),
+                "rod_force_hold": f_hold, "rod_force_long_term": f_static,
+                "rod_force_relative_difference": abs(f_hold - f_static) / abs(f_static),
+                "static_equilibrium": bool(m.static)}
