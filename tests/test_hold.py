@@ -67,6 +67,8 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
     assert "Prony terms: 2 active" in r.stdout
     hold = json.loads((out / "summary.json").read_text())["hold"]
     check = hold["long_term_check"]
+    # out of balance by < 1e-4 of the 1,670 N rod force (the TS rtol; measured 0.017 N)
+    assert check["long_term_residual_max_N"] < 0.17
     assert check["rod_force_relative_difference"] < 1e-4
     assert check["max_displacement_difference_mm"] < 1e-6
     assert hold["linear_iterations"] == hold["newton_iterations"]
