@@ -72,7 +72,7 @@ def test_full_jacobian_with_internal_variables_against_finite_differences(axisym
     assert np.count_nonzero(hh - np.diag(np.diag(hh))) == 0
 
 
-def relaxation_run(series, gamma, times, shift=1.0):
+def relaxation_run(series, gamma, times, shift=1.0, stops=()):
     """One plane-strain element under a step shear u_x = gamma y at t = 0, all terms active,
     from a virgin state (H = 0): the shear stress S12 at ``times`` over G_0 gamma."""
     X = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
@@ -81,7 +81,8 @@ def relaxation_run(series, gamma, times, shift=1.0):
     solid = SolidTerm(X, conn, inst, False)
     na = len(series.g)
     hdofs = 8 + np.arange(16 * na).reshape(1, -1)
-    prony = PronyTerm(solid, inst, series.g, series.tau, hdofs, shift=lambda t: shift)
+    prony = PronyTerm(solid, inst, series.g, series.tau, hdofs,
+                      shift=shift if callable(shift) else (lambda t: shift))
     u0 = np.zeros(8 + hdofs.size)
     u0[vertex_dofs(4)[:, 0]] = gamma * X[:, 1]
     problem = Problem(u0.size, [solid, prony],
@@ -93,8 +94,8 @@ def relaxation_run(series, gamma, times, shift=1.0):
         H = u[hdofs].reshape(4, na, 4)[0]
         out[t] = (S[3] - series.g @ H[:, 3]) / (2 * inst.c10 * gamma)
 
-    problem.transient(u0, 0.0, times[-1], 1e-10, stops=times[:-1], on_stop=record,
-                      rtol=1e-6, atol=1e-12)
+    problem.transient(u0, 0.0, times[-1], 1e-10, stops=list(times[:-1]) + list(stops),
+                      on_stop=record, rtol=1e-6, atol=1e-12)
     return np.array([out[min(out, key=lambda s: abs(s - t))] for t in times]), problem
 
 
@@ -123,6 +124,19 @@ def test_temperature_shifts_the_relaxation_curve():
     assert np.allclose(cold, warm, rtol=1e-3)
     assert np.allclose(warm, TABLE2.relaxation(times), rtol=1e-3)
     assert warm[0] / warm[-1] > 1.5      # the curve really relaxes over this window
+
+
+def test_temperature_step_during_relaxation_follows_reduced_time():
+    """Cooling by 10 K at t1 = 0.01 s during a stress relaxation: from then on the stress
+    is G_0 gamma g_R(xi) with the reduced time xi = t1 + (t - t1) / A (Eq. 11)."""
+    A = wlf_shift(15.0, 25.0, *TABLE2_WLF)
+    t1 = 0.01
+    times = np.array([0.02, 0.1, 1.0, 10.0, 100.0])
+    got, _ = relaxation_run(TABLE2, 1e-4, times, shift=lambda t: 1.0 if t < t1 else A,
+                            stops=(t1,))
+    xi = t1 + (times - t1) / A
+    assert np.allclose(got, TABLE2.relaxation(xi), rtol=1e-3)
+    assert not np.allclose(got, TABLE2.relaxation(times), rtol=1e-2)  # the step matters
 
 
 def test_classification_bounds_the_modulus_error_for_a_10_s_stroke():

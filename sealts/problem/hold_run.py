@@ -32,12 +32,21 @@ from .problem import Problem, SolveError
 
 
 def prony_series(ve):
-    """The scene's Prony series and its WLF factor A(theta)."""
+    """The scene's Prony series and its WLF factor A(theta(t)) as a function of time in the
+    hold (constant, or from the piecewise-linear temperature history)."""
     if ve.prony == "table2":
         series = PronySeries(TABLE2_G, TABLE2_TAU)
     else:
         series = PronySeries(np.array(ve.prony_g), np.array(ve.prony_tau))
-    return series, float(wlf_shift(ve.temperature, ve.theta_0, ve.wlf_c1, ve.wlf_c2))
+
+    def shift_at(theta):
+        return float(wlf_shift(theta, ve.theta_0, ve.wlf_c1, ve.wlf_c2))
+
+    if ve.temperature_times:
+        ts, th = np.array(ve.temperature_times), np.array(ve.temperature_values)
+        return series, lambda t: shift_at(np.interp(t, ts, th))
+    a = shift_at(ve.temperature)
+    return series, lambda t: a
 
 
 def step_ramp(t, t_ramp):
@@ -50,9 +59,12 @@ class HoldStep:
 
     def __init__(self, model, u0, p_from, p_to, t_ramp, ve, t_end, comm=None):
         self.model, self.p_to = model, p_to
-        self.series, self.shift = prony_series(ve)
+        self.series, self.shift_of_t = prony_series(ve)
         s = self.series
-        self.classes = classify(s, ve.t_min, t_end, ve.tol, shift=self.shift)
+        temps = list(ve.temperature_values) or [ve.temperature]
+        shifts = [float(wlf_shift(th, ve.theta_0, ve.wlf_c1, ve.wlf_c2)) for th in temps]
+        self.shift = max(shifts)            # for reports: the slowest relaxation
+        self.classes = classify(s, ve.t_min, t_end, ve.tol, shift=(min(shifts), max(shifts)))
         act, rel, frz = self.classes.active, self.classes.relaxed, self.classes.frozen
         mat = model.material
         self.instantaneous = replace(mat, c10=mat.c10 / s.g_inf, c01=mat.c01 / s.g_inf)
@@ -65,7 +77,7 @@ class HoldStep:
         X = mesh.X
         self.solid = SolidTerm(X, mesh.conn, elastic, model.axisym, udofs=lay.udofs)
         self.prony = PronyTerm(self.solid, self.instantaneous, s.g[act], s.tau[act],
-                               lay.prony_dofs, shift=lambda t: self.shift)
+                               lay.prony_dofs, shift=self.shift_of_t)
         H0, S0 = self.prony.equilibrium(u0)
         self.prony.frozen = s.g[frz].sum() * S0
         # rod and groove at their final positions

@@ -349,6 +349,7 @@ def _run_hold(model, u, scene, writer, comm, say, res_pressurised):
 
     t_end = hold.t_end
     stops = [t for t in 10.0 ** np.arange(-6, 13) if hold.t_ramp <= t < t_end]
+    stops += [t for t in ve.temperature_times if 0.0 < t < t_end]   # kinks of A(theta(t))
     U = step.run(t_end, hold.dt, hold.rtol, stops=stops, on_step=on_step, on_stop=on_stop)
     u = displacement(U)
     res = model.results(t_end, u)
@@ -356,7 +357,7 @@ def _run_hold(model, u, scene, writer, comm, say, res_pressurised):
     c = step.problem.counters
     info = {
         "p_from": scene.fluid.p_in, "p_to": hold.p_end, "t_end": t_end,
-        "wlf_shift": step.shift,
+        "wlf_shift": step.shift,            # the largest over the hold
         "prony_active_tau": [float(step.shift * step.series.tau[i])
                              for i in step.classes.active],
         "prony_relaxed": len(step.classes.relaxed), "prony_frozen": len(step.classes.frozen),

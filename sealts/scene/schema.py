@@ -141,6 +141,11 @@ class Viscoelastic:
     prony_tau: list[float] = option([], unit="s", gt=0.0,
                                     doc="custom: relaxation times tau_i at theta_0")
     temperature: float = option(25.0, unit="C", doc="seal temperature theta (WLF shift)")
+    temperature_times: list[float] = option([], unit="s", ge=0.0,
+                                            doc="times of a temperature history in the hold "
+                                                "(piecewise linear; replaces temperature)")
+    temperature_values: list[float] = option([], unit="C",
+                                             doc="temperatures at temperature_times")
     theta_0: float = option(25.0, unit="C", doc="reference temperature of the tau_i")
     wlf_c1: float = option(7.69, doc="WLF C1 (Eq. 12; Table 2 value)")
     wlf_c2: float = option(157.74, unit="K", gt=0.0, doc="WLF C2 (Eq. 12; Table 2 value)")
@@ -269,9 +274,16 @@ def _check_viscoelastic(s):
     elif ve.prony_g or ve.prony_tau:
         raise SceneError("viscoelastic.prony_g / prony_tau are only used with "
                          f"prony = 'custom' (prony is {ve.prony!r})")
-    if ve.wlf_c2 + ve.temperature - ve.theta_0 <= 0.0:
-        raise SceneError(f"viscoelastic.temperature = {ve.temperature:g} C is below the WLF "
-                         f"range (theta_0 - C2 = {ve.theta_0 - ve.wlf_c2:g} C)")
+    if len(ve.temperature_times) != len(ve.temperature_values):
+        raise SceneError("viscoelastic.temperature_times and temperature_values must have "
+                         f"the same length (got {len(ve.temperature_times)} and "
+                         f"{len(ve.temperature_values)})")
+    if any(b <= a for a, b in zip(ve.temperature_times, ve.temperature_times[1:])):
+        raise SceneError("viscoelastic.temperature_times must increase")
+    for theta in [ve.temperature] + list(ve.temperature_values):
+        if ve.wlf_c2 + theta - ve.theta_0 <= 0.0:
+            raise SceneError(f"viscoelastic.temperature {theta:g} C is below the WLF range "
+                             f"(theta_0 - C2 = {ve.theta_0 - ve.wlf_c2:g} C)")
     if hold.p_end != 0.0:
         if ve.prony == "none":
             raise SceneError("hold.p_end needs a viscoelastic material: set "

@@ -93,14 +93,18 @@ class Classification:
 
 
 def classify(series, t_min, t_end, tol, shift=1.0):
-    """Relaxed / frozen / active terms for loading over [t_min, t_end] (s) within ``tol``."""
+    """Relaxed / frozen / active terms for loading over [t_min, t_end] (s) within ``tol``.
+
+    ``shift``: the WLF factor A, or its range (A_min, A_max) when the temperature varies:
+    a term must then be relaxed at its slowest and frozen at its fastest."""
     if not 0.0 < t_min <= t_end:
         raise ValueError("prony classification needs 0 < t_min <= t_end")
-    tau = shift * series.tau
+    lo, hi = (shift, shift) if np.isscalar(shift) else (min(shift), max(shift))
     g = series.g
-    err_relaxed = g * np.exp(-t_min / tau)
-    err_frozen = g * -np.expm1(-t_end / tau)
+    err_relaxed = g * np.exp(-t_min / (hi * series.tau))
+    err_frozen = g * -np.expm1(-t_end / (lo * series.tau))
     err = np.minimum(err_relaxed, err_frozen)
+    shift = hi
     budget = tol * float(series.relaxation(t_end, shift))
     kind = np.full(len(g), "active", dtype=object)
     spent = 0.0
