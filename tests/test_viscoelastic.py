@@ -3,16 +3,14 @@ time-temperature superposition, and the classification of terms."""
 import numpy as np
 import pytest
 
-from sealts.mesh.layout import vertex_dofs
 from sealts.problem import Problem
-from sealts.problem.problem import Constraints
 from sealts.solid.prony import (TABLE2_G, TABLE2_TAU, TABLE2_WLF, PronySeries, classify,
                                 wlf_shift)
+from sealts.solid.shear_element import shear_history
 from sealts.solid.term import NeoHooke, SolidTerm
-from sealts.solid.viscoelastic import PronyTerm, iso_pk2, iso_stress
+from sealts.solid.viscoelastic import PronyTerm, iso_pk2
 
 TABLE2 = PronySeries(TABLE2_G, TABLE2_TAU)
-C10_INF = 1.064
 
 
 def distorted_mesh():
@@ -75,28 +73,8 @@ def test_full_jacobian_with_internal_variables_against_finite_differences(axisym
 def relaxation_run(series, gamma, times, shift=1.0, stops=()):
     """One plane-strain element under a step shear u_x = gamma y at t = 0, all terms active,
     from a virgin state (H = 0): the shear stress S12 at ``times`` over G_0 gamma."""
-    X = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
-    conn = np.array([[0, 1, 2, 3]])
-    inst = NeoHooke(C10_INF / series.g_inf, 0.001)
-    solid = SolidTerm(X, conn, inst, False)
-    na = len(series.g)
-    hdofs = 8 + np.arange(16 * na).reshape(1, -1)
-    prony = PronyTerm(solid, inst, series.g, series.tau, hdofs,
-                      shift=shift if callable(shift) else (lambda t: shift))
-    u0 = np.zeros(8 + hdofs.size)
-    u0[vertex_dofs(4)[:, 0]] = gamma * X[:, 1]
-    problem = Problem(u0.size, [solid, prony],
-                      constraints=Constraints(np.arange(8), u0[:8].copy()))
-    out = {}
-
-    def record(t, u):
-        S = iso_stress(u[:8], conn, solid.B, inst.c10, 0.0)[0, 0]
-        H = u[hdofs].reshape(4, na, 4)[0]
-        out[t] = (S[3] - series.g @ H[:, 3]) / (2 * inst.c10 * gamma)
-
-    problem.transient(u0, 0.0, times[-1], 1e-10, stops=list(times[:-1]) + list(stops),
-                      on_stop=record, rtol=1e-6, atol=1e-12)
-    return np.array([out[min(out, key=lambda s: abs(s - t))] for t in times]), problem
+    got, problem = shear_history(series, times, gamma, shift=shift, stops=stops)
+    return got / gamma, problem
 
 
 def test_step_shear_relaxes_like_the_prony_series():
@@ -157,43 +135,14 @@ def test_classification_bounds_the_modulus_error_for_a_10_s_stroke():
     assert len(classify(TABLE2, 1e-4, 10.0, 1e-4).active) >= len(c.active)
 
 
-def pruned_relaxation(series, classes, gamma, times):
-    """The step-shear run with relaxed terms folded into the elastic modulus and frozen
-    ones dropped (they start from H = 0 and stay there), as HoldStep builds it."""
-    act, rel = classes.active, classes.relaxed
-    sub = PronySeries(series.g[act], series.tau[act]) if len(act) else None
-    X = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
-    conn = np.array([[0, 1, 2, 3]])
-    inst = NeoHooke(C10_INF / series.g_inf, 0.001)
-    elastic = NeoHooke(inst.c10 * (1 - series.g[rel].sum()), 0.001)
-    solid = SolidTerm(X, conn, elastic, False)
-    na = len(act)
-    hdofs = 8 + np.arange(16 * na).reshape(1, -1)
-    prony = PronyTerm(solid, inst, sub.g, sub.tau, hdofs)
-    u0 = np.zeros(8 + hdofs.size)
-    u0[vertex_dofs(4)[:, 0]] = gamma * X[:, 1]
-    problem = Problem(u0.size, [solid, prony],
-                      constraints=Constraints(np.arange(8), u0[:8].copy()))
-    out = {}
-
-    def record(t, u):
-        S = iso_stress(u[:8], conn, solid.B, inst.c10, 0.0)[0, 0]
-        H = u[hdofs].reshape(4, na, 4)[0]
-        out[t] = ((1 - series.g[rel].sum()) * S[3] - sub.g @ H[:, 3]) / (2 * inst.c10 * gamma)
-
-    problem.transient(u0, 0.0, times[-1], 1e-10, stops=times[:-1], on_stop=record,
-                      rtol=1e-6, atol=1e-12)
-    return np.array([out[min(out, key=lambda s: abs(s - t))] for t in times]), problem
-
-
 def test_pruned_and_full_series_agree_within_the_stated_bound():
     """Table 2 over [1e-4, 10] s at tol 1e-2: the pruned model's relaxation (6 of 15 terms
     carried) matches the full one within the classification's bound (plus 2e-4 for the two
     runs' time-integration errors)."""
     times = np.logspace(-4, 1, 6)
     c = classify(TABLE2, 1e-4, 10.0, 1e-2)
-    pruned, p_pruned = pruned_relaxation(TABLE2, c, 1e-4, times)
-    full, p_full = relaxation_run(TABLE2, 1e-4, times)
+    pruned = shear_history(TABLE2, times, 1e-4, classes=c)[0] / 1e-4
+    full, _ = relaxation_run(TABLE2, 1e-4, times)
     assert np.abs(pruned / full - 1).max() <= c.error_bound + 2e-4
     assert len(c.active) < 15
 
@@ -206,28 +155,8 @@ def test_constant_shear_rate_against_the_hereditary_integral():
     2.5e-4)."""
     series = TABLE2
     rate = 1e-6
-    X = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
-    conn = np.array([[0, 1, 2, 3]])
-    inst = NeoHooke(C10_INF / series.g_inf, 0.001)
-    solid = SolidTerm(X, conn, inst, False)
-    na = len(series.g)
-    hdofs = 8 + np.arange(16 * na).reshape(1, -1)
-    prony = PronyTerm(solid, inst, series.g, series.tau, hdofs)
-    shape = np.zeros(8)
-    shape[0:8:2] = X[:, 1]                      # u_x = gamma y
-    problem = Problem(8 + hdofs.size, [solid, prony],
-                      constraints=Constraints(np.arange(8), lambda t: rate * t * shape))
     times = np.logspace(-4, 2, 7)
-    got = {}
-
-    def record(t, u):
-        S = iso_stress(u[:8], conn, solid.B, inst.c10, 0.0)[0, 0]
-        H = u[hdofs].reshape(4, na, 4)[0]
-        got[t] = (S[3] - series.g @ H[:, 3]) / (2 * inst.c10)
-
-    problem.transient(np.zeros(8 + hdofs.size), 0.0, times[-1], 1e-8, stops=times[:-1],
-                      on_stop=record, rtol=1e-6, atol=1e-12)
-    s = np.array([got[min(got, key=lambda x: abs(x - t))] for t in times])
+    s, _ = shear_history(series, times, lambda t: rate * t, dt0=1e-8)
     g, tau = series.g, series.tau
     exact = rate * (series.g_inf * times
                     + (g * tau * -np.expm1(-times[:, None] / tau)).sum(1))
