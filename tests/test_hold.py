@@ -81,3 +81,15 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
     assert abs(force[after] - force[-1]) > 1e-3 * abs(force[-1])   # it creeps after the step
     assert dt.max() > 1e3 * dt.min()
     assert (out / "hold_profiles.csv").exists() and (out / "series.png").exists()
+
+
+def test_temperature_history_gives_the_wlf_factor_in_time():
+    """The cooling scene: A = 1 at 25 C until 60 s, then theta falls linearly to 0 C at
+    3660 s, where A = 10^(7.69 * 25 / 132.74) (Eq. 12); halfway it is A(12.5 C)."""
+    from sealts.problem.hold_run import prony_series
+    s = scene("oring_hold_cooling")
+    _, shift = prony_series(s.viscoelastic)
+    assert shift(0.0) == shift(60.0) == 1.0
+    assert shift(3660.0) == pytest.approx(10 ** (7.69 * 25 / 132.74), rel=1e-12)
+    assert shift(1e6) == shift(3660.0)
+    assert shift(1860.0) == pytest.approx(10 ** (7.69 * 12.5 / 145.24), rel=1e-12)

@@ -83,7 +83,8 @@ class Classification:
         tau = shift * series.tau
         rows = [f"Prony terms: {len(self.active)} active, {len(self.relaxed)} relaxed, "
                 f"{len(self.frozen)} frozen of {len(tau)} (relative modulus error <= "
-                f"{self.error_bound:.2g})"]
+                f"{self.error_bound:.2g})"
+                + ("" if shift == 1.0 else f"; tau shown times the WLF factor {shift:.3g}")]
         for name, idx in (("active", self.active), ("relaxed", self.relaxed),
                           ("frozen", self.frozen)):
             if len(idx):
