@@ -39,6 +39,16 @@ def tributary_lengths(X, edges, n):
     return np.bincount(edges.ravel(), np.repeat(0.5 * L, 2), minlength=n)
 
 
+def node_contact_pressure(n_nodes, groove, rod, t, u):
+    """Largest contact pressure (groove walls, rod) at every node, MPa (0 off the walls):
+    what the pressure-penetration front compares with the fluid pressure."""
+    pc = np.zeros(n_nodes)
+    pc[groove.nodes] = groove.node_pressures(t, u)
+    p_rod, _ = rod.pressure(t, u)
+    np.maximum.at(pc, rod.chain, p_rod)
+    return pc
+
+
 def softplus_penalty(g, k, delta):
     """p = k delta ln(1 + exp(-g/delta)) and dp/dg, overflow-safe."""
     x = -g / delta

@@ -23,6 +23,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from ..contact.rigid import node_contact_pressure
 from ..mesh.layout import Layout
 from ..solid.pressure import PressureLoad
 from ..solid.prony import TABLE2_G, TABLE2_TAU, PronySeries, classify, wlf_shift
@@ -101,11 +102,7 @@ class HoldStep:
                                snes_atol=1e-9 * model.force_scale, fields=fields)
 
     def node_contact_pressure(self, t, u):
-        pc = np.zeros(self.model.mesh.X.shape[0])
-        pc[self.groove.nodes] = self.groove.node_pressures(t, u)
-        p_rod, _ = self.rod.pressure(t, u)
-        np.maximum.at(pc, self.rod.chain, p_rod)
-        return pc
+        return node_contact_pressure(self.model.mesh.X.shape[0], self.groove, self.rod, t, u)
 
     def run(self, t_end, dt0, rtol, stops=(), on_step=None, on_stop=None):
         def step(ts, k, t, U):

@@ -14,7 +14,8 @@ import time
 
 import numpy as np
 
-from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
+from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
+                             tributary_lengths)
 from ..mesh.layout import Layout
 from ..problem import Problem, SolveError
 from ..solid.stabilisation import ViscousStabilisation
@@ -111,12 +112,7 @@ class SealModel:
         return self._quasi_static([], np.zeros(self.n), 0.0, t_hold, dt0, 1.0, comm, on_step)
 
     def node_contact_pressure(self, t, u):
-        """Largest contact pressure (groove walls, rod) at every node, MPa (0 off the walls)."""
-        pc = np.zeros(self.mesh.X.shape[0])
-        pc[self.groove.nodes] = self.groove.node_pressures(t, u)
-        p_rod, _ = self.rod.pressure(t, u)
-        np.maximum.at(pc, self.rod.chain, p_rod)
-        return pc
+        return node_contact_pressure(self.mesh.X.shape[0], self.groove, self.rod, t, u)
 
     def pressurise(self, u0, p_in, t0=2.0, t_hold=4.0, dt0=0.02, comm=None, on_step=None):
         """Step 2 of the paper: p_in ramped on the wetted free surface from t0 to t0 + 1,
