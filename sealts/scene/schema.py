@@ -44,6 +44,9 @@ class Fluid:
     viscosity: float = option(1e-8, unit="MPa s", gt=0.0, doc="dynamic viscosity eta")
     p_in: float = option(0.0, unit="MPa", doc="pressure at y = 0 (sealed, pressurised side)")
     p_out: float = option(0.0, unit="MPa", doc="pressure at y = l (atmosphere side)")
+    p_crit: float = option(0.1, unit="MPa", ge=0.0,
+                           doc="model = seal: pressure penetration stops where the seal "
+                               "presses on a wall by more than the fluid pressure + p_crit")
 
 
 @dataclass(frozen=True)

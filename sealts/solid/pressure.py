@@ -11,9 +11,22 @@ outward normal times length is (dz, -dr), the consistent nodal forces are
 
 Pressure penetration: the wetted set starts at the most exposed node of the pressure side
 (its smallest z) and follows the boundary loop in both directions up to the first node where
-the contact pressure p_c from the groove or the rod exceeds the fluid pressure p: there the
-seal seals. The front lies inside the last edge, where the linear interpolant of p_c - p
-between its two nodes crosses zero, so only that fraction theta of the edge is loaded:
+the seal seals: where its normal traction on the wall, sigma_n, exceeds the fluid pressure p
+by more than p_crit. The wall's contact pressure p_c (groove penalty or rod asperity law) is
+only the solid share of sigma_n: on a node whose load is wetted by the share phi (1 wet, 0
+dry, a fraction next to the front) the fluid already presses with phi p, so
+
+    sigma_n = p_c + phi p,     g = sigma_n - p - p_crit,     the seal seals where g > 0.
+
+A dry node thus seals where p_c > p + p_crit, a wetted one only while p_c > p_crit. (Comparing
+p_c alone with p let the front creep: the node just past it took over part of the front
+edge's load as a fluid load, its p_c fell although sigma_n stayed, and the front moved on by
+a fraction of an edge at every update; from about 4.4 MPa on the paper's O-ring it never
+stopped.) p_crit (scene key ``fluid.p_crit``, default 0.1 MPa, ABAQUS's "critical contact
+pressure") keeps a wetted node that still touches the wall from flipping with the penalty's
+residual pressure at zero gap. The front lies inside the last edge, where the linear
+interpolant of g between its two nodes crosses zero, so only that fraction theta of the edge
+is loaded:
 
     F_a = -p 2 pi int_s0^s1 (1 - s) r(s) ds (dz, -dr),   F_b = -p 2 pi int_s0^s1 s r(s) ds (dz, -dr)
 
@@ -22,7 +35,9 @@ continuously: as p_c at the blocking node falls to p, theta reaches 1, and the n
 starts from theta = 0. (Wetting whole edges made the load jump at every node the front
 passed, and TS cut its step to one node per step: dt ~ 5e-5 on the paper's 0.01 mm mesh.)
 The front is updated between time steps only (``update`` from the last accepted state,
-called by the TS monitor), so each Newton solve sees a fixed, smooth load.
+called by the TS monitor), so each Newton solve sees a fixed, smooth load. While the pressure
+rises the front may only advance (``recede=False``); the drivers then settle it at the final
+pressure (front update and static solve in turn, until it stops moving).
 """
 import numpy as np
 
@@ -44,9 +59,12 @@ def boundary_loop(conn):
 
 
 class PressureLoad(Term):
-    def __init__(self, X, conn, pressure, axisym, start_node, depth=1.0, udofs=None):
-        """``pressure(t)`` in MPa; ``start_node`` the node where the fluid arrives."""
+    def __init__(self, X, conn, pressure, axisym, start_node, depth=1.0, udofs=None,
+                 p_crit=0.1):
+        """``pressure(t)`` in MPa; ``start_node`` the node where the fluid arrives;
+        ``p_crit`` (MPa) the traction beyond p at which a node seals."""
         self.X, self.pressure, self.axisym, self.depth = X, pressure, axisym, depth
+        self.p_crit = p_crit
         self.edges = boundary_loop(conn)
         self.m = len(self.edges)
         self.start = int(np.nonzero(self.edges[:, 0] == start_node)[0][0])
@@ -77,17 +95,45 @@ class PressureLoad(Term):
             k = (k + step) % self.m
         return float(self.m)
 
-    def update(self, contact_pressure_at_nodes, p, max_advance=None):
-        """Wet the loop from the start node both ways up to where p_c - p crosses zero.
+    def wet_share(self):
+        """phi per node: the wetted share of the fluid load the node would carry if all its
+        boundary edges were wet (int N ds over the wet part / over the edge), 0 off the loop."""
+        s0, s1 = self.s0, self.s1
+        a, b = self.edges[:, 0], self.edges[:, 1]
+        n = self.X.shape[0]
+        wet = (np.bincount(a, (s1 - s0) - 0.5 * (s1**2 - s0**2), minlength=n)
+               + np.bincount(b, 0.5 * (s1**2 - s0**2), minlength=n))
+        full = np.bincount(a, np.full(self.m, 0.5), minlength=n) + np.bincount(
+            b, np.full(self.m, 0.5), minlength=n)
+        return np.divide(wet, full, out=np.zeros(n), where=full > 0)
+
+    def target_reach(self, contact_pressure_at_nodes, p):
+        """How far the fluid gets each way (edges from the start) for the nodal wall contact
+        pressures p_c at fluid pressure p: where g = p_c + phi p - p - p_crit crosses zero
+        (see the module docstring), phi from the present wetting."""
+        g = contact_pressure_at_nodes + (self.wet_share() - 1.0) * p - self.p_crit
+        return [self._reach(g, 1), self._reach(g, -1)]
+
+    def update(self, contact_pressure_at_nodes, p, max_advance=None, recede=True):
+        """Move the fronts to ``target_reach``; return how far they moved (edges).
 
         ``max_advance`` (edges): how far each front may advance in one update. A region
-        whose contact pressure falls below p all at once would otherwise flood in one
-        step, a load jump that no step size can soften (met in the viscoelastic hold)."""
-        g = contact_pressure_at_nodes - p
-        reach = [self._reach(g, 1), self._reach(g, -1)]
-        if max_advance is not None and self.reach is not None:
-            reach = [min(r, old + max_advance) for r, old in zip(reach, self.reach)]
-        self.reach = reach
+        whose contact pressure falls below p all at once would otherwise flood in one step,
+        a load jump that no step size can soften (met in the viscoelastic hold).
+        ``recede=False``: the fronts may only advance (while the pressure rises)."""
+        reach = self.target_reach(contact_pressure_at_nodes, p)
+        old = self.reach
+        if old is not None:
+            if max_advance is not None:
+                reach = [min(r, o + max_advance) for r, o in zip(reach, old)]
+            if not recede:
+                reach = [max(r, o) for r, o in zip(reach, old)]
+        self.set_reach(reach)
+        return 0.0 if old is None else float(sum(abs(r - o) for r, o in zip(reach, old)))
+
+    def set_reach(self, reach):
+        """Wet the loop from the start node: reach[0] edges one way, reach[1] the other."""
+        self.reach = list(reach)
         s0, s1 = np.zeros(self.m), np.zeros(self.m)
         for r, step in zip(reach, (1, -1)):
             n = int(min(r, self.m))
@@ -160,3 +206,29 @@ class PressureLoad(Term):
         K[:, 2] = p * (dz[:, None] * dwb + wb[:, None] * ddz)
         K[:, 3] = -p * (dr[:, None] * dwb + wb[:, None] * ddr)
         return K.ravel()
+
+
+class RelaxedFront:
+    """Front updates for a long transient run: each front moves by omega times its way to
+    ``target_reach``, at most ``max_advance`` edges forward. omega halves whenever the front
+    reverses and doubles (up to 1) while it keeps its direction. Met in the viscoelastic hold
+    at 5 MPa: at t = 10.45 s a front flipped between two positions at every step, each
+    position's equilibrium pointing at the other, and the adaptive step collapsed."""
+
+    def __init__(self, load, max_advance=1.0):
+        self.load, self.max_advance = load, max_advance
+        self.omega = [1.0, 1.0]
+        self.direction = [0.0, 0.0]
+
+    def __call__(self, contact_pressure_at_nodes, p):
+        L = self.load
+        target = L.target_reach(contact_pressure_at_nodes, p)
+        reach = []
+        for i, (goal, now) in enumerate(zip(target, L.reach)):
+            d = float(np.sign(goal - now))
+            if d != 0.0:
+                reverses = self.direction[i] != 0.0 and d != self.direction[i]
+                self.omega[i] = 0.5 * self.omega[i] if reverses else min(1.0, 2 * self.omega[i])
+                self.direction[i] = d
+            reach.append(now + min(self.omega[i] * (goal - now), self.max_advance))
+        L.set_reach(reach)
