@@ -260,6 +260,35 @@ def test_penetration_front_is_a_fixed_point_of_a_fixed_traction():
     assert phi[load.edges[(load.start + 2) % load.m][1]] == 0.0
 
 
+def test_relaxed_front_damps_an_overshooting_front():
+    """A front whose target overshoots its fixed point (each position's equilibrium points
+    beyond the fixed point on the other side, as met in the 5 MPa hold at t = 10.45 s):
+    target = x* - 1.5 (x - x*). Plain updates oscillate with growing amplitude; the relaxed
+    front halves its step at every reversal and converges to x*."""
+    from sealts.solid.pressure import RelaxedFront
+
+    class Overshooting:
+        reach = [5.0, 2.0]
+
+        def target_reach(self, pc, p):
+            return [5.5 - 1.5 * (self.reach[0] - 5.5), 2.0]
+
+        def set_reach(self, reach):
+            self.reach = list(reach)
+
+    plain = Overshooting()
+    for _ in range(6):
+        plain.set_reach(plain.target_reach(None, 1.0))
+    assert abs(plain.reach[0] - 5.5) > 5.0            # 0.5 * 1.5^6 = 5.7
+
+    load = Overshooting()
+    front = RelaxedFront(load, max_advance=10.0)
+    for _ in range(40):
+        front(None, 1.0)
+    assert abs(load.reach[0] - 5.5) < 1e-6
+    assert load.reach[1] == 2.0
+
+
 def test_pressurised_oring_balances_the_annulus_load(tmp_path):
     """p_in = 1 MPa after mounting: the seal seals at the rod and the groove bottom, so the
     axial load it passes to the atmosphere-side wall is p_in pi (r_G^2 - r_rod^2), 807.7 N
