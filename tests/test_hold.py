@@ -47,11 +47,11 @@ def test_relaxed_start_has_no_stress_jump(pressurised):
 
 
 def test_hold_creeps_to_the_long_term_state(tmp_path):
-    """CLI: 1 -> 3 MPa, hold 1000 s (>> tau = 1 s). The end state is the long-term static
+    """CLI: 1 -> 5 MPa, hold 1000 s (>> tau = 1 s). The end state is the long-term static
     solution (rod force within 1e-4: the TS tolerance is 1e-4; displacements within 1e-6 mm;
-    measured 1.3e-5 and 7e-8 mm); the linear solve is the exact Schur complement (one
-    Krylov iteration per Newton step); the seal creeps after the step; steps grow by
-    decades; outputs are written."""
+    measured 4e-11 and 2e-13 mm, with the front settled alike); the linear solve is the
+    exact Schur complement (one Krylov iteration per Newton step); the seal creeps after the
+    step; steps grow by decades; outputs are written."""
     cfg = tmp_path / "hold.toml"
     text = (CONFIGS / "oring_hold.toml").read_text()
     text = text.replace('prony = "table2"', 'prony = "custom"\nprony_g = [0.5, 0.3]\n'
@@ -67,8 +67,8 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
     assert "Prony terms: 2 active" in r.stdout
     hold = json.loads((out / "summary.json").read_text())["hold"]
     check = hold["long_term_check"]
-    # out of balance by < 1e-4 of the 1,670 N rod force (the TS rtol; measured 0.017 N)
-    assert check["long_term_residual_max_N"] < 0.17
+    # out of balance by < 1e-4 of the 2,886 N rod force (the TS rtol; measured 1.8e-6 N)
+    assert check["long_term_residual_max_N"] < 0.29
     assert check["rod_force_relative_difference"] < 1e-4
     assert check["max_displacement_difference_mm"] < 1e-6
     assert hold["linear_iterations"] == hold["newton_iterations"]
