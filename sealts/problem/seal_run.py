@@ -324,6 +324,10 @@ def run_seal(scene, writer, comm):
         # front and equilibrium agree
         res["front_change_edges"] = model.front_settled
         res["front_updates"] = model.front_updates
+        if model.front_settled >= 1e-4:
+            say(f"warning: the pressure-penetration front did not settle in "
+                f"{model.front_updates + 1} updates (one more would move it "
+                f"{model.front_settled:.3g} edges); try a larger fluid.p_crit", force=True)
         y, h, p = model.contact_profile(t_end, u)
         writer.profile(t_end, {"y": y, "h": h, "p_contact": p})
     hold = scene.hold
