@@ -1,0 +1,218 @@
+"""The Reynolds film on the deforming seal surface: the coupled soft-EHL term (issue 5).
+
+The film nodes are the vertices of the seal's ``rod_side`` chain (ordered by reference z) at
+their *current* axial position, and the gap follows the seal's radial displacement:
+
+    y_i = Z_i + u_z,i                                             (Eq. 25)
+    h_i = R_i + u_r,i - r(t)                                      (Eq. 18)
+    dh_i/dt = du_r,i/dt - dr/dt                                   (Eq. 26, from the TS's U')
+
+(the seal's axial velocity is neglected in the film, Eq. 21; the rod's radius is constant in
+a stroke, so dr/dt only matters while a scene moves the rod radially). The unknowns are the
+nodal film pressures p_i (the ``film_pressure`` field of :class:`sealts.mesh.layout.Layout`)
+and the seal displacements; this term owns
+
+* the film rows (one per chain node): the control-volume balance of
+  :mod:`sealts.film.reynolds_fv` for the transient Reynolds equation (Eq. 13),
+
+      R_i = M_i dh_eff_i/dt + q_{i+1/2} - q_{i-1/2} = 0,
+      q_e = (I2_e - (p_b - p_a) / L_e) / I1_e,   L_e = y_b - y_a,
+      M_i = (y_{i+1} - y_{i-1}) / 2,
+
+  each multiplied by a fixed positive row scale (so the rows read in MPa), with the
+  Dirichlet rows p = p_in at the pressurised end of the chain and p = p_out at the other;
+* the radial force of the film on the seal (Eq. 29-31), on the u_r rows:
+
+      F_r,i = p_i A L_i,   L_i = (y_{i+1} - y_{i-1}) / 2 (one-sided at the chain ends),
+
+  the same current tributary lengths as the asperity contact of
+  :class:`sealts.contact.rigid.RodContact` (Eq. 45), so fluid and asperity loads are lumped
+  alike; A = 2 pi r_rod (axisymmetric) or the depth (Eq. 31). The residual is internal minus
+  external force, so F_r is subtracted (+r pushes the seal away from the rod).
+
+Exact Jacobian (the chain rule through the gap provider, docs/design.md):
+
+* dq_e/dp_a = 1/(L I1), dq_e/dp_b = -1/(L I1) and dq_e/dh_a, dq_e/dh_b from
+  :func:`sealts.film.reynolds_fv.element_fluxes`, with dh/du_r = 1;
+* dq_e/dL = (p_b - p_a) / (L^2 I1) (I1, I2 are averages over the element in its own
+  coordinate, independent of L), with dL/du_z,b = 1, dL/du_z,a = -1;
+* the storage S_i = M_i h_eff'(h_i) dh_i/dt: dS/dh_i from :func:`storage`, dS/d(dh_i/dt)
+  = M_i h_eff'(h_i) times the TS ``shift`` on u_r,i (dh'/du' = 1), and
+  dS/du_z,i+-1 = +-1/2 h_eff'(h_i) dh_i/dt through M_i;
+* dF_r,i/dp_i = A L_i, dF_r,i/du_z,hi = p_i A / 2, dF_r,i/du_z,lo = -p_i A / 2.
+
+The fluid shear stress on the seal (Eq. 32-34) is not applied as an axial load yet: it is
+about two orders of magnitude below the solid friction in the paper's O-ring.
+"""
+import numpy as np
+
+from ..mesh.layout import vertex_dofs
+from ..problem import Term
+from .flow_factors import FlowFactors
+from .reynolds_fv import conductance, element_fluxes, storage
+
+
+def _as_function(x):
+    return x if callable(x) else (lambda t, x=float(x): x)
+
+
+class SealFilmTerm(Term):
+    """The film on the seal's rod-side chain, coupled to the seal displacements.
+
+    Owns the rows ``pdofs`` (film pressures, in chain order) and adds to the u_r rows of the
+    chain nodes. Columns: the chain's film pressures, u_r and u_z.
+    """
+
+    def __init__(self, X, chain, pdofs, r_rod, v, eta, p_in, p_out, area, ff=None,
+                 h_floor=1e-5, squeeze=True, pressurised_end="min_z", udofs=None,
+                 rod_rate=None, h_ref=1e-3):
+        """``X``: reference coordinates (r, z) of the mesh nodes; ``chain``: the rod-side
+        nodes ordered by z (``mesh.chain("rod_side")``); ``pdofs``: their film-pressure dofs
+        in the same order (``Layout.film_dofs``); ``udofs``: node -> (u_r, u_z) dofs
+        (``Layout.udofs``). ``r_rod(t)`` the rod radius (mm) and ``rod_rate(t)`` its rate
+        (default 0), ``v(t)`` the rod's axial velocity (mm/s); ``eta`` the viscosity
+        (MPa s); ``p_in``, ``p_out`` (MPa, numbers or functions of t) at the pressurised end
+        (``pressurised_end``: ``"min_z"``, the chain's first node, or ``"max_z"``) and at the
+        other; ``area``: A of Eq. 31 (mm); ``ff``: :class:`FlowFactors` (none by default);
+        ``h_floor`` (mm): the gap regularisation of :mod:`sealts.film.gap`; ``squeeze``:
+        with the dh/dt term. The film rows are scaled by their diagonal for the reference
+        chain at a uniform gap ``h_ref`` (mm) until :meth:`set_row_scale` fixes them at a
+        state."""
+        if pressurised_end not in ("min_z", "max_z"):
+            raise ValueError(f"pressurised_end must be 'min_z' or 'max_z', got {pressurised_end!r}")
+        self.X = np.asarray(X, float)
+        self.chain = np.asarray(chain, np.int64)
+        m = self.m = self.chain.size
+        if m < 3:
+            raise ValueError("the film needs at least three chain nodes")
+        udofs = vertex_dofs(self.X.shape[0]) if udofs is None else np.asarray(udofs)
+        self.ur, self.uz = udofs[self.chain, 0], udofs[self.chain, 1]
+        self.pd = np.asarray(pdofs, np.int64)
+        if self.pd.shape != (m,):
+            raise ValueError("pdofs must give one film-pressure dof per chain node")
+        self.R, self.Z = self.X[self.chain, 0], self.X[self.chain, 1]
+        self.r_rod, self.v = r_rod, _as_function(v)
+        self.rod_rate = _as_function(0.0 if rod_rate is None else rod_rate)
+        self.eta, self.area, self.h_floor, self.squeeze = eta, area, h_floor, squeeze
+        self.ff = FlowFactors.none() if ff is None else ff
+        first = pressurised_end == "min_z"
+        self.p_first = _as_function(p_in if first else p_out)
+        self.p_last = _as_function(p_out if first else p_in)
+        self.pressurised_end = pressurised_end
+
+        ur, uz, pd = self.ur, self.uz, self.pd
+        a = np.arange(m - 1)
+        b = a + 1
+        # element flows: rows p_a (+q) and p_b (-q), columns p_a, p_b, u_r,a, u_r,b, u_z,a, u_z,b
+        ecols = np.stack([pd[a], pd[b], ur[a], ur[b], uz[a], uz[b]], 1)
+        erows = np.stack([a, b], 1)                                   # chain index of the row
+        r6 = np.repeat(erows[:, :, None], 6, 2)                       # (e, 2, 6)
+        c6 = np.repeat(ecols[:, None, :], 2, 1)
+        self._ekeep = ((r6 != 0) & (r6 != m - 1)).ravel()
+        i = np.arange(1, m - 1)                                       # interior nodes
+        self._rows_film = np.concatenate([r6.ravel()[self._ekeep], i, i, i])
+        film_cols = np.concatenate([c6.ravel()[self._ekeep], ur[i], uz[i + 1], uz[i - 1]])
+        # nodal radial forces, neighbours for L_i one-sided at the ends (as RodContact)
+        self.lo = np.concatenate([[0], np.arange(m - 1)])
+        self.hi = np.concatenate([np.arange(1, m), [m - 1]])
+        self.rows = np.concatenate([pd[self._rows_film], [pd[0], pd[-1]], ur, ur, ur])
+        self.cols = np.concatenate([film_cols, [pd[0], pd[-1]], pd, uz[self.hi], uz[self.lo]])
+        self.rows = self.rows.astype(np.int64)
+        self.cols = self.cols.astype(np.int64)
+        self.row_scale = self._reference_row_scale(h_ref)
+
+    # ---- the state on the chain ----------------------------------------------------------
+    def _ffargs(self):
+        f = self.ff
+        return f.model, f.par, f.table_h, f.table_pp, f.table_ps
+
+    def film(self, t, u, udot=None):
+        """(y, h, dh/dt, p) on the chain: current axial positions, gaps (Eq. 18), squeeze
+        rates (zero with the squeeze term off or without U') and film pressures."""
+        y = self.Z + u[self.uz]
+        h = self.R + u[self.ur] - self.r_rod(t)
+        if self.squeeze and udot is not None:
+            hd = udot[self.ur] - self.rod_rate(t)
+        else:
+            hd = np.zeros(self.m)
+        return y, h, hd, np.asarray(u[self.pd], float)
+
+    def lengths(self, y):
+        """Tributary lengths L_i (mm), one-sided at the ends (Eq. 30)."""
+        return 0.5 * (y[self.hi] - y[self.lo])
+
+    def _reference_row_scale(self, h_ref):
+        """1 / diagonal of the balance rows on the reference chain at the uniform gap h_ref."""
+        ik = conductance(h_ref, self.eta, self.h_floor, *self._ffargs())[0]
+        d = 1.0 / (np.diff(self.Z) * ik)                               # 1 / (L I1) per element
+        s = np.ones(self.m)
+        s[1:-1] = 1.0 / (d[1:] + d[:-1])
+        return s
+
+    def set_row_scale(self, t, u, udot=None):
+        """Fix each balance row's scale to 1 / its diagonal at this state (rows in MPa)."""
+        y, h, hd, p = self.film(t, u, udot)
+        _, dqa, dqb, _, _ = element_fluxes(y, h, p, self.v(t), self.eta, self.h_floor,
+                                           *self._ffargs())
+        self.row_scale = np.ones(self.m)
+        self.row_scale[1:-1] = 1.0 / (dqa[1:] - dqb[:-1])
+
+    def _fluxes(self, t, y, h, hd, p):
+        q, dqa, dqb, dha, dhb = element_fluxes(y, h, p, self.v(t), self.eta, self.h_floor,
+                                               *self._ffargs())
+        s, ds_dh, ds_dhd = storage(y, h, hd, self.h_floor)
+        return q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd
+
+    def balance(self, t, u, udot=None):
+        """The unscaled nodal balances M_i dh_eff_i/dt + q_{i+1/2} - q_{i-1/2} (mm^2/s), all
+        nodes (the end ones are the boundary flows' reactions), and the element flows q."""
+        y, h, hd, p = self.film(t, u, udot)
+        q, _, _, _, _, s, _, _ = self._fluxes(t, y, h, hd, p)
+        r = s.copy()
+        r[:-1] += q
+        r[1:] -= q
+        return r, q, s
+
+    def flows(self, t, u, udot=None):
+        """(Q_in, Q_out) in mm^3/s: the flow entering the film at the pressurised end and
+        leaving at the other (Eq. 41); Q_in - Q_out = A d/dt sum_i M_i h_eff_i."""
+        _, q, s = self.balance(t, u, udot)
+        q_first, q_last = q[0] + s[0], q[-1] - s[-1]     # in +y at the two ends
+        if self.pressurised_end == "min_z":
+            return self.area * q_first, self.area * q_last
+        return -self.area * q_last, -self.area * q_first
+
+    def forces(self, t, u):
+        """Radial film force on each chain node (N), F_r,i = p_i A L_i (Eq. 29-31)."""
+        y = self.Z + u[self.uz]
+        return u[self.pd] * self.area * self.lengths(y)
+
+    def pressure(self, u):
+        return np.asarray(u[self.pd], float)
+
+    # ---- Term interface ------------------------------------------------------------------
+    def add_residual(self, t, u, udot, f):
+        r, _, _ = self.balance(t, u, udot)
+        p = u[self.pd]
+        r = r * self.row_scale
+        r[0] = p[0] - self.p_first(t)
+        r[-1] = p[-1] - self.p_last(t)
+        np.add.at(f, self.pd, r)
+        np.subtract.at(f, self.ur, self.forces(t, u))
+
+    def jacobian_values(self, t, u, udot, shift):
+        y, h, hd, p = self.film(t, u, udot)
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = self._fluxes(t, y, h, hd, p)
+        L = np.diff(y)
+        dqL = (p[1:] - p[:-1]) * dqa / L                 # dq/dL = dp / (L^2 I1)
+        d = np.stack([dqa, dqb, dha, dhb, -dqL, dqL], 1)  # per element, columns as the pattern
+        ev = np.stack([d, -d], 1).ravel()[self._ekeep]
+        i = np.arange(1, self.m - 1)
+        M = 0.5 * (y[i + 1] - y[i - 1])
+        rate = ds_dhd[i] / M * hd[i]                     # h_eff'(h_i) dh_i/dt = dS_i/dM_i
+        shift_hd = shift if (self.squeeze and udot is not None) else 0.0
+        sv = np.concatenate([ds_dh[i] + shift_hd * ds_dhd[i], 0.5 * rate, -0.5 * rate])
+        film = np.concatenate([ev, sv]) * self.row_scale[self._rows_film]
+        A = self.area
+        Li = self.lengths(y)
+        return np.concatenate([film, [1.0, 1.0], -A * Li, -0.5 * A * p, 0.5 * A * p])

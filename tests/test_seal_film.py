@@ -1,0 +1,203 @@
+"""The film on the deforming seal (SealFilmTerm): exact Jacobian, rigid limit, mass balance.
+
+Each test checks the coupled term against something computed another way: central
+differences of its residual, the rigid-gap ControlVolumeScheme of the film-only scenes on the
+same nodes, and a film volume differenced in time and a trapezoid integral of p.
+"""
+import numpy as np
+import pytest
+
+from sealts.film.flow_factors import FlowFactors
+from sealts.film.reynolds_fv import ControlVolumeScheme, element_fluxes
+from sealts.film.seal_film import SealFilmTerm
+from sealts.mesh.layout import Layout
+from sealts.mesh.seal_mesh import ORing, build_mesh
+from sealts.problem import Problem
+
+ETA, H_FLOOR, RQ = 1e-8, 1e-5, 2.15e-4
+R0 = 25.0                      # rod radius at t = 0 (mm)
+AREA = 2 * np.pi * R0
+
+
+def rod(t):
+    return R0 + 1e-5 * t       # a slowly growing rod, so dr/dt enters dh/dt
+
+
+def rod_rate(t):
+    return 1e-5
+
+
+def coarse(tmp_path):
+    mesh = build_mesh(ORing(50.17, 5.33), 0.3, 0.6, cache_dir=tmp_path)
+    return mesh, Layout(mesh, film=True)
+
+
+def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=80.0):
+    ff = FlowFactors.patir_cheng(RQ, 1.0) if factors == "patir-cheng" else FlowFactors.none()
+    return SealFilmTerm(mesh.X, layout.rod_nodes, layout.film_dofs, rod, lambda t: v, ETA,
+                        lambda t: 1.0 + 0.1 * t, 0.2, AREA, ff=ff, h_floor=H_FLOOR,
+                        squeeze=squeeze, pressurised_end=end, udofs=layout.udofs,
+                        rod_rate=rod_rate)
+
+
+def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5):
+    """A random smooth displacement of the whole seal that brings the rod-side chain to gaps
+    of 0.5..3 um from the rod (one node at h_low, inside the h_floor regularisation), random
+    film pressures and a random U' (radial squeeze rates of order 1 um/s)."""
+    rng = np.random.default_rng(seed)
+    X = mesh.X
+    u = np.zeros(layout.n)
+    k = rng.uniform(0.5, 2.0, (2, 2))
+    ph = rng.uniform(0, 2 * np.pi, 2)
+    u[layout.udofs[:, 0]] = 0.01 * np.sin(k[0, 0] * X[:, 0] + k[0, 1] * X[:, 1] + ph[0])
+    u[layout.udofs[:, 1]] = 0.02 * np.sin(k[1, 0] * X[:, 0] + k[1, 1] * X[:, 1] + ph[1])
+    c = layout.rod_nodes
+    z = X[c, 1]
+    h = 1.7e-3 + 1.2e-3 * np.sin(2.1 * z + rng.uniform(0, 6))
+    h[c.size // 3] = h_low
+    u[layout.udofs[c, 0]] = rod(t) + h - X[c, 0]
+    u[layout.film_dofs] = rng.uniform(0.0, 2.0, c.size)
+    ud = rng.uniform(-1.0, 1.0, layout.n) * 1e-3
+    return u, ud
+
+
+@pytest.mark.parametrize("factors,end", [("none", "min_z"), ("patir-cheng", "max_z")])
+def test_seal_film_jacobian(tmp_path, factors, end):
+    """Every block (p-p, p-u_r, p-u_z, p-u_r' through the TS shift, u_r-p, u_r-u_z) against
+    central differences in U and U'; bound 1e-6 of the largest entry of each row and column
+    block."""
+    mesh, layout = coarse(tmp_path)
+    term = make_term(mesh, layout, factors, end)
+    t = 0.3
+    u, ud = seal_state(mesh, layout, 1, t)
+    term.set_row_scale(t, u, ud)
+    problem = Problem(layout.n, [term])
+    shift = 37.0
+    J0 = problem.jacobian_dense(t, u, ud, 0.0)
+    Jshift = (problem.jacobian_dense(t, u, ud, shift) - J0) / shift
+    c = layout.rod_nodes
+    blocks = {"p": layout.film_dofs, "ur": layout.udofs[c, 0], "uz": layout.udofs[c, 1]}
+    eps = {"p": 1e-6, "ur": 1e-9, "uz": 1e-7}
+    n = layout.n
+    fd_u = np.zeros((n, n))
+    fd_ud = np.zeros((n, n))
+    for name, cols in blocks.items():
+        for j in cols:
+            e = np.zeros(n)
+            e[j] = eps[name]
+            fd_u[:, j] = (problem.residual(t, u + e, ud) - problem.residual(t, u - e, ud)) \
+                / (2 * eps[name])
+            e[j] = 1e-6
+            fd_ud[:, j] = (problem.residual(t, u, ud + e) - problem.residual(t, u, ud - e)) \
+                / 2e-6
+    # nothing outside the chain's dofs is touched
+    others = np.setdiff1d(np.arange(n), np.concatenate(list(blocks.values())))
+    assert not np.any(J0[others]) and not np.any(J0[:, others])
+    for rname in ("p", "ur"):
+        rows = blocks[rname]
+        for cname, cols in blocks.items():
+            for J, fd in ((J0, fd_u), (Jshift, fd_ud)):
+                a, b = J[np.ix_(rows, cols)], fd[np.ix_(rows, cols)]
+                scale = max(np.abs(a).max(), 1e-8 * np.abs(J0[rows]).max())
+                assert np.abs(a - b).max() <= 1e-6 * scale, (rname, cname)
+    # the check saw every coupling: pressure gradients, squeeze, moving nodes, loads
+    assert np.abs(J0[np.ix_(blocks["p"], blocks["uz"])]).max() > 0
+    assert np.abs(Jshift[np.ix_(blocks["p"], blocks["ur"])]).max() > 0
+    assert np.abs(J0[np.ix_(blocks["ur"], blocks["uz"])]).max() > 0
+
+
+@pytest.mark.parametrize("end", ["min_z", "max_z"])
+def test_rigid_limit_is_the_film_only_scheme(tmp_path, end):
+    """On the same nodes (y, h, dh/dt) the film rows are the ControlVolumeScheme's rows of the
+    film-only scenes, residual and pressure Jacobian, to round-off: at u = 0 (the seal's own
+    curved surface over the rod), and on a deformed seal with the scheme built on the current
+    y = Z + u_z and h = R + u_r - r."""
+    mesh, layout = coarse(tmp_path)
+    term = make_term(mesh, layout, "patir-cheng", end)
+    c, t = layout.rod_nodes, 0.3
+    ur, uz, pd = layout.udofs[c, 0], layout.udofs[c, 1], layout.film_dofs
+    deformed, ud = seal_state(mesh, layout, 2, t)
+    rigid = np.zeros(layout.n)
+    rigid[pd] = deformed[pd]
+    for u in (rigid, deformed):
+        y = mesh.X[c, 1] + u[uz]
+        h = mesh.X[c, 0] + u[ur] - rod(t)
+        hd = ud[ur] - rod_rate(t)
+        p_first, p_last = (1.0 + 0.1 * t, 0.2) if end == "min_z" else (0.2, 1.0 + 0.1 * t)
+        scheme = ControlVolumeScheme(y, ETA, lambda t: 80.0, p_first, p_last,
+                                     FlowFactors.patir_cheng(RQ, 1.0), H_FLOOR)
+        scheme.set_row_scale(t, u[pd], h, hd)
+        term.set_row_scale(t, u, ud)
+        want, _, _ = scheme.residual(t, u[pd], h, hd)
+        f = np.zeros(layout.n)
+        term.add_residual(t, u, ud, f)
+        assert np.allclose(f[pd], want, rtol=0, atol=1e-13 * np.abs(want).max())
+        vals, _ = scheme.jacobian(t, u[pd], h, hd)
+        Jp = np.zeros((c.size, c.size))
+        np.add.at(Jp, scheme.pattern, vals)
+        J = Problem(layout.n, [term]).jacobian_dense(t, u, ud, 5.0)
+        assert np.allclose(J[np.ix_(pd, pd)], Jp, rtol=1e-13, atol=0)
+
+
+def test_mass_balance_and_radial_force(tmp_path):
+    """The interior balances add up to Q_in - Q_out - d/dt(sum_i M_i h_i) = 0 to round-off,
+    with the boundary flows from the element flows and the end control volumes, and the film
+    volume differenced in time along u + s U' with a moving rod; and the radial film force on
+    the seal is A times the trapezoid integral of p over the current y."""
+    mesh, layout = coarse(tmp_path)
+    term = make_term(mesh, layout, "none", "max_z")
+    c, t = layout.rod_nodes, 0.3
+    ur, uz, pd = layout.udofs[c, 0], layout.udofs[c, 1], layout.film_dofs
+    u, ud = seal_state(mesh, layout, 3, t, h_low=4e-4)   # h > 2 h_floor: h_eff = h
+    ud[uz] = 0.0             # the film ignores the seal's axial velocity (Eq. 21)
+    term.set_row_scale(t, u, ud)
+    f = np.zeros(layout.n)
+    term.add_residual(t, u, ud, f)
+    balance = f[pd][1:-1] / term.row_scale[1:-1]
+    y = mesh.X[c, 1] + u[uz]
+    M = np.zeros(c.size)
+    M[:-1] += 0.5 * np.diff(y)
+    M[1:] += 0.5 * np.diff(y)
+
+    def volume(s):
+        us, ts = u + s * ud, t + s
+        return M @ (mesh.X[c, 0] + us[ur] - rod(ts))
+
+    dvol = volume(0.5) - volume(-0.5)   # linear in s: exact for any step
+    ff = FlowFactors.none()
+    q, *_ = element_fluxes(y, mesh.X[c, 0] + u[ur] - rod(t), u[pd], 80.0, ETA, H_FLOOR,
+                           ff.model, ff.par, ff.table_h, ff.table_pp, ff.table_ps)
+    hd = ud[ur] - rod_rate(t)
+    # pressurised end at max z: inflow there is -q in -y, outflow at min z is -q too
+    q_in = -(q[-1] - M[-1] * hd[-1])
+    q_out = -(q[0] + M[0] * hd[0])
+    scale = np.abs(q).max()
+    assert abs(balance.sum() - (dvol - (q_in - q_out))) <= 1e-12 * scale
+    Q_in, Q_out = term.flows(t, u, ud)
+    assert Q_in == pytest.approx(AREA * q_in, rel=1e-13)
+    assert Q_out == pytest.approx(AREA * q_out, rel=1e-13)
+    # the radial force: only the chain's u_r rows carry it, outward on the seal
+    f_u = f.copy()
+    f_u[pd] = 0.0
+    assert np.count_nonzero(f_u) == c.size and np.all(f_u[ur] < 0)
+    p = u[pd]
+    trapezoid = float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(y)))
+    assert -f_u.sum() == pytest.approx(AREA * trapezoid, rel=1e-13)
+
+
+def test_squeeze_off_and_dirichlet_ends(tmp_path):
+    """Without the squeeze term U' does not enter (no shift entries); the end rows hold p_in
+    at the pressurised end and p_out at the other, at their time-dependent values."""
+    mesh, layout = coarse(tmp_path)
+    c, t = layout.rod_nodes, 0.7
+    u, ud = seal_state(mesh, layout, 4, t)
+    pd = layout.film_dofs
+    for end, (first, last) in (("min_z", (1.07, 0.2)), ("max_z", (0.2, 1.07))):
+        term = make_term(mesh, layout, "none", end, squeeze=False)
+        problem = Problem(layout.n, [term])
+        f0 = problem.residual(t, u, np.zeros(layout.n))
+        assert np.array_equal(f0, problem.residual(t, u, ud))
+        assert np.array_equal(problem.jacobian_dense(t, u, ud, 0.0),
+                              problem.jacobian_dense(t, u, ud, 50.0))
+        assert f0[pd[0]] == pytest.approx(u[pd[0]] - first, abs=1e-15)
+        assert f0[pd[-1]] == pytest.approx(u[pd[-1]] - last, abs=1e-15)
