@@ -32,12 +32,13 @@ def coarse(tmp_path):
     return mesh, Layout(mesh, film=True)
 
 
-def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=80.0):
+def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=80.0,
+              surface_normal=False):
     ff = FlowFactors.patir_cheng(RQ, 1.0) if factors == "patir-cheng" else FlowFactors.none()
     return SealFilmTerm(mesh.X, layout.rod_nodes, layout.film_dofs, rod, lambda t: v, ETA,
                         lambda t: 1.0 + 0.1 * t, 0.2, AREA, ff=ff, h_floor=H_FLOOR,
                         squeeze=squeeze, pressurised_end=end, udofs=layout.udofs,
-                        rod_rate=rod_rate)
+                        rod_rate=rod_rate, surface_normal=surface_normal)
 
 
 def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5):
@@ -61,13 +62,14 @@ def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5):
     return u, ud
 
 
-@pytest.mark.parametrize("factors,end", [("none", "min_z"), ("patir-cheng", "max_z")])
-def test_seal_film_jacobian(tmp_path, factors, end):
-    """Every block (p-p, p-u_r, p-u_z, p-u_r' through the TS shift, u_r-p, u_r-u_z) against
-    central differences in U and U'; bound 1e-6 of the largest entry of each row and column
-    block."""
+@pytest.mark.parametrize("factors,end,normal", [("none", "min_z", False),
+                                                ("patir-cheng", "max_z", True)])
+def test_seal_film_jacobian(tmp_path, factors, end, normal):
+    """Every block (p-p, p-u_r, p-u_z, p-u_r' through the TS shift, u_r-p, u_r-u_z, and with
+    the surface-normal load u_z-p, u_z-u_r) against central differences in U and U'; bound
+    1e-6 of the largest entry of each row and column block."""
     mesh, layout = coarse(tmp_path)
-    term = make_term(mesh, layout, factors, end)
+    term = make_term(mesh, layout, factors, end, surface_normal=normal)
     t = 0.3
     u, ud = seal_state(mesh, layout, 1, t)
     term.set_row_scale(t, u, ud)
@@ -93,8 +95,12 @@ def test_seal_film_jacobian(tmp_path, factors, end):
     # nothing outside the chain's dofs is touched
     others = np.setdiff1d(np.arange(n), np.concatenate(list(blocks.values())))
     assert not np.any(J0[others]) and not np.any(J0[:, others])
-    for rname in ("p", "ur"):
+    for rname in ("p", "ur", "uz"):
         rows = blocks[rname]
+        if not np.any(J0[rows]):
+            assert rname == "uz" and not normal
+            assert np.abs(fd_u[rows]).max() == 0.0
+            continue
         for cname, cols in blocks.items():
             for J, fd in ((J0, fd_u), (Jshift, fd_ud)):
                 a, b = J[np.ix_(rows, cols)], fd[np.ix_(rows, cols)]
@@ -104,6 +110,8 @@ def test_seal_film_jacobian(tmp_path, factors, end):
     assert np.abs(J0[np.ix_(blocks["p"], blocks["uz"])]).max() > 0
     assert np.abs(Jshift[np.ix_(blocks["p"], blocks["ur"])]).max() > 0
     assert np.abs(J0[np.ix_(blocks["ur"], blocks["uz"])]).max() > 0
+    if normal:
+        assert np.abs(J0[np.ix_(blocks["uz"], blocks["ur"])]).max() > 0
 
 
 @pytest.mark.parametrize("end", ["min_z", "max_z"])
@@ -145,7 +153,7 @@ def test_mass_balance_and_radial_force(tmp_path):
     volume differenced in time along u + s U' with a moving rod; and the radial film force on
     the seal is A times the trapezoid integral of p over the current y."""
     mesh, layout = coarse(tmp_path)
-    term = make_term(mesh, layout, "none", "max_z")
+    term = make_term(mesh, layout, "none", "max_z", surface_normal=True)
     c, t = layout.rod_nodes, 0.3
     ur, uz, pd = layout.udofs[c, 0], layout.udofs[c, 1], layout.film_dofs
     u, ud = seal_state(mesh, layout, 3, t, h_low=4e-4)   # h > 2 h_floor: h_eff = h
@@ -176,13 +184,18 @@ def test_mass_balance_and_radial_force(tmp_path):
     Q_in, Q_out = term.flows(t, u, ud)
     assert Q_in == pytest.approx(AREA * q_in, rel=1e-13)
     assert Q_out == pytest.approx(AREA * q_out, rel=1e-13)
-    # the radial force: only the chain's u_r rows carry it, outward on the seal
+    # the load: on the chain's u_r (outward on the seal) and u_z rows only; radially
+    # A int p dy, axially -A int p dr over the current chain (trapezoids)
     f_u = f.copy()
     f_u[pd] = 0.0
-    assert np.count_nonzero(f_u) == c.size and np.all(f_u[ur] < 0)
+    assert np.count_nonzero(f_u[ur]) == c.size and np.all(f_u[ur] < 0)
+    assert np.count_nonzero(f_u) == np.count_nonzero(f_u[ur]) + np.count_nonzero(f_u[uz])
     p = u[pd]
-    trapezoid = float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(y)))
-    assert -f_u.sum() == pytest.approx(AREA * trapezoid, rel=1e-13)
+    r = mesh.X[c, 0] + u[ur]
+    assert -f_u[ur].sum() == pytest.approx(
+        AREA * float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(y))), rel=1e-13)
+    assert -f_u[uz].sum() == pytest.approx(
+        -AREA * float(np.sum(0.5 * (p[1:] + p[:-1]) * np.diff(r))), rel=1e-12)
 
 
 def test_squeeze_off_and_dirichlet_ends(tmp_path):
@@ -201,3 +214,4 @@ def test_squeeze_off_and_dirichlet_ends(tmp_path):
                               problem.jacobian_dense(t, u, ud, 50.0))
         assert f0[pd[0]] == pytest.approx(u[pd[0]] - first, abs=1e-15)
         assert f0[pd[-1]] == pytest.approx(u[pd[-1]] - last, abs=1e-15)
+

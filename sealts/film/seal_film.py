@@ -29,6 +29,17 @@ and the seal displacements; this term owns
   :class:`sealts.contact.rigid.RodContact` (Eq. 45), so fluid and asperity loads are lumped
   alike; A = 2 pi r_rod (axisymmetric) or the depth (Eq. 31). The residual is internal minus
   external force, so F_r is subtracted (+r pushes the seal away from the rod).
+* optionally (``surface_normal=True``) the axial part of the pressure on the seal's own
+  surface, on the u_z rows:
+
+      F_z,i = -p_i A (r_{i+1} - r_{i-1}) / 2,   r_i = R_i + u_r,i,
+
+  which makes F_i = p_i A (L_i, -(r_{i+1} - r_{i-1})/2) the lumped follower load of p on the
+  current chain edges, F_e = p A (dy, -dr) split half to each node. In the thin film dr << dy
+  and F_z is negligible, as the paper assumes; on the open, inclined inlet and outlet parts
+  of the chain (gaps of 0.1 mm and more, p = p_in or p_out) the radial force alone has a
+  moment about the cross-section's centre and, with frictionless walls, rolls an O-ring in
+  its groove (seen in a quasi-static pressurisation of the coarse O-ring).
 
 Exact Jacobian (the chain rule through the gap provider, docs/design.md):
 
@@ -39,7 +50,8 @@ Exact Jacobian (the chain rule through the gap provider, docs/design.md):
 * the storage S_i = M_i h_eff'(h_i) dh_i/dt: dS/dh_i from :func:`storage`, dS/d(dh_i/dt)
   = M_i h_eff'(h_i) times the TS ``shift`` on u_r,i (dh'/du' = 1), and
   dS/du_z,i+-1 = +-1/2 h_eff'(h_i) dh_i/dt through M_i;
-* dF_r,i/dp_i = A L_i, dF_r,i/du_z,hi = p_i A / 2, dF_r,i/du_z,lo = -p_i A / 2.
+* dF_r,i/dp_i = A L_i, dF_r,i/du_z,hi = p_i A / 2, dF_r,i/du_z,lo = -p_i A / 2;
+  dF_z,i/dp_i = -A (r_hi - r_lo)/2, dF_z,i/du_r,hi = -p_i A / 2, dF_z,i/du_r,lo = p_i A / 2.
 
 The fluid shear stress on the seal (Eq. 32-34) is not applied as an axial load yet: it is
 about two orders of magnitude below the solid friction in the paper's O-ring.
@@ -60,12 +72,13 @@ class SealFilmTerm(Term):
     """The film on the seal's rod-side chain, coupled to the seal displacements.
 
     Owns the rows ``pdofs`` (film pressures, in chain order) and adds to the u_r rows of the
-    chain nodes. Columns: the chain's film pressures, u_r and u_z.
+    chain nodes (and their u_z rows with ``surface_normal``). Columns: the chain's film
+    pressures, u_r and u_z.
     """
 
     def __init__(self, X, chain, pdofs, r_rod, v, eta, p_in, p_out, area, ff=None,
                  h_floor=1e-5, squeeze=True, pressurised_end="min_z", udofs=None,
-                 rod_rate=None, h_ref=1e-3):
+                 rod_rate=None, h_ref=1e-3, surface_normal=False):
         """``X``: reference coordinates (r, z) of the mesh nodes; ``chain``: the rod-side
         nodes ordered by z (``mesh.chain("rod_side")``); ``pdofs``: their film-pressure dofs
         in the same order (``Layout.film_dofs``); ``udofs``: node -> (u_r, u_z) dofs
@@ -75,11 +88,13 @@ class SealFilmTerm(Term):
         (``pressurised_end``: ``"min_z"``, the chain's first node, or ``"max_z"``) and at the
         other; ``area``: A of Eq. 31 (mm); ``ff``: :class:`FlowFactors` (none by default);
         ``h_floor`` (mm): the gap regularisation of :mod:`sealts.film.gap`; ``squeeze``:
-        with the dh/dt term. The film rows are scaled by their diagonal for the reference
-        chain at a uniform gap ``h_ref`` (mm) until :meth:`set_row_scale` fixes them at a
-        state."""
+        with the dh/dt term; ``surface_normal``: also the axial part of the pressure on the
+        seal's inclined surface (module docstring). The film rows are scaled by their
+        diagonal for the reference chain at a uniform gap ``h_ref`` (mm) until
+        :meth:`set_row_scale` fixes them at a state."""
         if pressurised_end not in ("min_z", "max_z"):
-            raise ValueError(f"pressurised_end must be 'min_z' or 'max_z', got {pressurised_end!r}")
+            raise ValueError("pressurised_end must be 'min_z' or 'max_z', "
+                             f"got {pressurised_end!r}")
         self.X = np.asarray(X, float)
         self.chain = np.asarray(chain, np.int64)
         m = self.m = self.chain.size
@@ -115,10 +130,14 @@ class SealFilmTerm(Term):
         # nodal radial forces, neighbours for L_i one-sided at the ends (as RodContact)
         self.lo = np.concatenate([[0], np.arange(m - 1)])
         self.hi = np.concatenate([np.arange(1, m), [m - 1]])
-        self.rows = np.concatenate([pd[self._rows_film], [pd[0], pd[-1]], ur, ur, ur])
-        self.cols = np.concatenate([film_cols, [pd[0], pd[-1]], pd, uz[self.hi], uz[self.lo]])
-        self.rows = self.rows.astype(np.int64)
-        self.cols = self.cols.astype(np.int64)
+        self.surface_normal = surface_normal
+        rows = [pd[self._rows_film], [pd[0], pd[-1]], ur, ur, ur]
+        cols = [film_cols, [pd[0], pd[-1]], pd, uz[self.hi], uz[self.lo]]
+        if surface_normal:
+            rows += [uz, uz, uz]
+            cols += [pd, ur[self.hi], ur[self.lo]]
+        self.rows = np.concatenate(rows).astype(np.int64)
+        self.cols = np.concatenate(cols).astype(np.int64)
         self.row_scale = self._reference_row_scale(h_ref)
 
     # ---- the state on the chain ----------------------------------------------------------
@@ -187,6 +206,14 @@ class SealFilmTerm(Term):
         y = self.Z + u[self.uz]
         return u[self.pd] * self.area * self.lengths(y)
 
+    def axial_forces(self, t, u):
+        """Axial film force on each chain node (N): F_z,i = -p_i A (r_hi - r_lo)/2 with
+        ``surface_normal``, else zero."""
+        if not self.surface_normal:
+            return np.zeros(self.m)
+        r = self.R + u[self.ur]
+        return -u[self.pd] * self.area * self.lengths(r)
+
     def pressure(self, u):
         return np.asarray(u[self.pd], float)
 
@@ -199,6 +226,8 @@ class SealFilmTerm(Term):
         r[-1] = p[-1] - self.p_last(t)
         np.add.at(f, self.pd, r)
         np.subtract.at(f, self.ur, self.forces(t, u))
+        if self.surface_normal:
+            np.subtract.at(f, self.uz, self.axial_forces(t, u))
 
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
@@ -215,4 +244,8 @@ class SealFilmTerm(Term):
         film = np.concatenate([ev, sv]) * self.row_scale[self._rows_film]
         A = self.area
         Li = self.lengths(y)
-        return np.concatenate([film, [1.0, 1.0], -A * Li, -0.5 * A * p, 0.5 * A * p])
+        vals = [film, [1.0, 1.0], -A * Li, -0.5 * A * p, 0.5 * A * p]
+        if self.surface_normal:
+            dr = self.lengths(self.R + u[self.ur])
+            vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
+        return np.concatenate(vals)
