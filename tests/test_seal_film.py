@@ -215,3 +215,90 @@ def test_squeeze_off_and_dirichlet_ends(tmp_path):
         assert f0[pd[0]] == pytest.approx(u[pd[0]] - first, abs=1e-15)
         assert f0[pd[-1]] == pytest.approx(u[pd[-1]] - last, abs=1e-15)
 
+
+def test_pressurised_oring_with_film(tmp_path):
+    """The coarse mounted O-ring with the film on its rod side (surface-normal load), p_in =
+    1 MPa on the pressure side (the film's inlet, and the min-z flank by a PressureLoad with
+    its ``pressure_side`` edges wetted, no front updates), ramped in pseudo-time with viscous
+    stabilisation, then static Newton solves:
+
+    * v = 0: the hydrostatic film falls monotonically from p_in to p_out through the
+      contact; it leaks as much as it takes in (Q_in = Q_out > 0); it pushes the seal off the
+      rod; and the seal's axial balance closes: the side walls take the fluid's axial load
+      (pressure side flank plus the film's surface-normal part);
+    * v = 100 mm/s out of the pressure side (from the v = 0 state): hydrodynamic lift, a film
+      peak above p_in, a thicker film, less asperity load and more leakage.
+    """
+    from conftest import scene
+    from sealts.contact.rigid import GrooveContact, RodContact
+    from sealts.problem import Constraints
+    from sealts.problem.seal_run import model_from_scene, ramp
+    from sealts.solid.pressure import PressureLoad
+    from sealts.solid.stabilisation import ViscousStabilisation
+    from sealts.solid.term import SolidTerm
+
+    s = scene("oring_mount", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)})
+    model = model_from_scene(s)
+    u_mounted = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
+    assert model.static
+    mesh, X = model.mesh, model.mesh.X
+    lay = Layout(mesh, film=True)
+    chain, ud = lay.rod_nodes, lay.udofs
+    u = np.zeros(lay.n)
+    u[ud] = u_mounted[model.udofs]
+    # the mounted model's terms, on the layout with the film pressure field
+    solid = SolidTerm(X, mesh.conn, model.material, True, udofs=ud, heating=ramp)
+    rod_c = RodContact(X, chain, model.rod_radius, model.rod.area, 7e-4, 15.0, udofs=ud)
+    g = model.groove
+    groove = GrooveContact(X, g.nodes, np.ones(X.shape[0]), True, model.groove_radius,
+                           g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
+                           corner_radius=g.rho)
+    groove.w = g.w
+    stab = ViscousStabilisation(ud.ravel(), model.stab.m, model.stab.c)
+    p_in = lambda t: ramp(t - 2.0)                          # 0 -> 1 MPa over t = 2..3
+    velocity = [0.0]
+    film = SealFilmTerm(X, chain, lay.film_dofs, model.rod_radius, lambda t: velocity[0],
+                        1e-8, p_in, 0.0, model.rod.area, udofs=ud, squeeze=False,
+                        pressurised_end="min_z", surface_normal=True)
+    side = mesh.nodes("pressure_side")
+    load = PressureLoad(X, mesh.conn, p_in, True, side[np.argmin(X[side, 1])], udofs=ud)
+    flank = {tuple(sorted(e)) for e in mesh.edges["pressure_side"]}
+    load.s1 = np.array([tuple(sorted(e)) in flank for e in load.edges], float)
+    assert load.wet.sum() == len(flank)
+    # a consistent film pressure on the mounted seal, then the pseudo-time ramp
+    fixed = Constraints(ud.ravel(), u[ud.ravel()])
+    u = Problem(lay.n, [film], constraints=fixed).solve_steady(u, 2.0)
+    film.set_row_scale(2.0, u)
+    atol = 1e-9 * model.force_scale
+    ramped = Problem(lay.n, [solid, rod_c, groove, stab, film, load], linesearch="basic",
+                     snes_atol=atol)
+    u = ramped.transient(u, 2.0, 4.0, 0.02, stops=(3.0,), rtol=1e-3, atol=1e-4)
+    static = Problem(lay.n, [solid, rod_c, groove, film, load], linesearch="basic",
+                     snes_atol=atol)
+    static.max_it = 10
+    results = []
+    for v in (0.0, 100.0):
+        velocity[0] = v
+        u = static.solve_steady(u, 4.0)
+        p = u[lay.film_dofs]
+        results.append(dict(p=p, q=film.flows(4.0, u, np.zeros(lay.n)),
+                            h_min=rod_c.gap(4.0, u).min(), asperity=rod_c.forces(4.0, u).sum(),
+                            film=film.forces(4.0, u).sum()))
+        if v == 0.0:
+            assert p[0] == pytest.approx(1.0, abs=1e-12) and p[-1] == pytest.approx(0.0, abs=1e-12)
+            assert np.all(np.diff(p) <= 1e-9) and p.min() >= -1e-9
+            assert 0.0 < p[chain.size // 2] < 1.0               # it falls inside the contact
+            walls = groove.reactions(4.0, u)
+            fz = load.forces(4.0, u)
+            fluid_z = fz[:, 1].sum() + fz[:, 3].sum() + film.axial_forces(4.0, u).sum()
+            wall_z = walls["wall_pressure_side"] + walls["wall_atmosphere_side"]
+            assert fluid_z > 0 and wall_z == pytest.approx(-fluid_z, rel=1e-6)
+    still, moving = results
+    for r in results:
+        q_in, q_out = r["q"]
+        assert q_out > 0 and q_in == pytest.approx(q_out, rel=1e-5)
+        assert r["film"] > 0 and r["asperity"] > 0
+    assert moving["p"].max() > 1.2                          # hydrodynamic peak above p_in
+    assert moving["h_min"] > still["h_min"]
+    assert moving["asperity"] < still["asperity"]
+    assert moving["q"][1] > 10 * still["q"][1]
