@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from sealts.film.flow_factors import FlowFactors
-from sealts.film.reynolds_fv import ControlVolumeScheme, element_fluxes
+from sealts.film.quantities import shear_stress
+from sealts.film.reynolds_fv import ControlVolumeScheme, control_volumes, element_fluxes
 from sealts.film.seal_film import SealFilmTerm
 from sealts.mesh.layout import Layout
 from sealts.mesh.seal_mesh import ORing, build_mesh
@@ -33,18 +34,20 @@ def coarse(tmp_path):
 
 
 def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=80.0,
-              surface_normal=False):
+              surface_normal=False, shear=False):
     ff = FlowFactors.patir_cheng(RQ, 1.0) if factors == "patir-cheng" else FlowFactors.none()
     return SealFilmTerm(mesh.X, layout.rod_nodes, layout.film_dofs, rod, lambda t: v, ETA,
                         lambda t: 1.0 + 0.1 * t, 0.2, AREA, ff=ff, h_floor=H_FLOOR,
                         squeeze=squeeze, pressurised_end=end, udofs=layout.udofs,
-                        rod_rate=rod_rate, surface_normal=surface_normal)
+                        rod_rate=rod_rate, surface_normal=surface_normal, shear=shear,
+                        beta=0.3)
 
 
-def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5):
+def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5, h_mean=1.7e-3, p_uniform=False):
     """A random smooth displacement of the whole seal that brings the rod-side chain to gaps
-    of 0.5..3 um from the rod (one node at h_low, inside the h_floor regularisation), random
-    film pressures and a random U' (radial squeeze rates of order 1 um/s)."""
+    of h_mean (1 +- 0.7) (0.5..3 um by default; one node at h_low, inside the h_floor
+    regularisation), random film pressures (or all 1 MPa) and a random U' (radial squeeze
+    rates of order 1 um/s)."""
     rng = np.random.default_rng(seed)
     X = mesh.X
     u = np.zeros(layout.n)
@@ -54,24 +57,34 @@ def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5):
     u[layout.udofs[:, 1]] = 0.02 * np.sin(k[1, 0] * X[:, 0] + k[1, 1] * X[:, 1] + ph[1])
     c = layout.rod_nodes
     z = X[c, 1]
-    h = 1.7e-3 + 1.2e-3 * np.sin(2.1 * z + rng.uniform(0, 6))
-    h[c.size // 3] = h_low
+    h = h_mean * (1.0 + 0.7 * np.sin(2.1 * z + rng.uniform(0, 6)))
+    if h_low is not None:
+        h[c.size // 3] = h_low
     u[layout.udofs[c, 0]] = rod(t) + h - X[c, 0]
-    u[layout.film_dofs] = rng.uniform(0.0, 2.0, c.size)
+    u[layout.film_dofs] = 1.0 if p_uniform else rng.uniform(0.0, 2.0, c.size)
     ud = rng.uniform(-1.0, 1.0, layout.n) * 1e-3
     return u, ud
 
 
-@pytest.mark.parametrize("factors,end,normal", [("none", "min_z", False),
-                                                ("patir-cheng", "max_z", True)])
-def test_seal_film_jacobian(tmp_path, factors, end, normal):
-    """Every block (p-p, p-u_r, p-u_z, p-u_r' through the TS shift, u_r-p, u_r-u_z, and with
-    the surface-normal load u_z-p, u_z-u_r) against central differences in U and U'; bound
-    1e-6 of the largest entry of each row and column block."""
+@pytest.mark.parametrize("factors,end,normal,gap", [("none", "min_z", False, "thin"),
+                                                    ("patir-cheng", "max_z", True, "thin"),
+                                                    ("none", "min_z", False, "thick")])
+def test_seal_film_jacobian(tmp_path, factors, end, normal, gap):
+    """Every block (p-p, p-u_r, p-u_z, p-u_r' through the TS shift, u_r-p, u_r-u_z, and the
+    shear and surface-normal loads' u_z-p, u_z-u_r, u_z-u_z, u_z-u_r') against central
+    differences in U and U'; bound 1e-6 of the largest entry of each row, and of each block
+    (film pressure, u_r, u_z rows and columns of the chain). The "thin" films
+    are 0.5..3 um with one node in the h_floor range and a sliding rod; the "thick" one
+    (30..170 um, uniform p, rod at rest) leaves the squeeze-rate gradient of Eq. 32-33 as
+    the shear, which is otherwise far below round-off of the rest."""
     mesh, layout = coarse(tmp_path)
-    term = make_term(mesh, layout, factors, end, surface_normal=normal)
+    term = make_term(mesh, layout, factors, end, surface_normal=normal, shear=True,
+                     v=80.0 if gap == "thin" else 0.0)
     t = 0.3
-    u, ud = seal_state(mesh, layout, 1, t)
+    if gap == "thin":
+        u, ud = seal_state(mesh, layout, 1, t)
+    else:
+        u, ud = seal_state(mesh, layout, 1, t, h_low=None, h_mean=0.1, p_uniform=True)
     term.set_row_scale(t, u, ud)
     problem = Problem(layout.n, [term])
     shift = 37.0
@@ -79,7 +92,9 @@ def test_seal_film_jacobian(tmp_path, factors, end, normal):
     Jshift = (problem.jacobian_dense(t, u, ud, shift) - J0) / shift
     c = layout.rod_nodes
     blocks = {"p": layout.film_dofs, "ur": layout.udofs[c, 0], "uz": layout.udofs[c, 1]}
-    eps = {"p": 1e-6, "ur": 1e-9, "uz": 1e-7}
+    # u_r steps above the round-off of h = R + u_r - r (R ~ 25 mm: 3e-15 mm); F is affine in
+    # U', so its step may be large
+    eps = {"p": 1e-6, "ur": 1e-8, "uz": 1e-7}
     n = layout.n
     fd_u = np.zeros((n, n))
     fd_ud = np.zeros((n, n))
@@ -89,29 +104,28 @@ def test_seal_film_jacobian(tmp_path, factors, end, normal):
             e[j] = eps[name]
             fd_u[:, j] = (problem.residual(t, u + e, ud) - problem.residual(t, u - e, ud)) \
                 / (2 * eps[name])
-            e[j] = 1e-6
+            e[j] = 1e-2
             fd_ud[:, j] = (problem.residual(t, u, ud + e) - problem.residual(t, u, ud - e)) \
-                / 2e-6
+                / 2e-2
     # nothing outside the chain's dofs is touched
     others = np.setdiff1d(np.arange(n), np.concatenate(list(blocks.values())))
     assert not np.any(J0[others]) and not np.any(J0[:, others])
-    for rname in ("p", "ur", "uz"):
-        rows = blocks[rname]
-        if not np.any(J0[rows]):
-            assert rname == "uz" and not normal
-            assert np.abs(fd_u[rows]).max() == 0.0
-            continue
-        for cname, cols in blocks.items():
-            for J, fd in ((J0, fd_u), (Jshift, fd_ud)):
+    chain_dofs = np.concatenate(list(blocks.values()))
+    for J, fd in ((J0, fd_u), (Jshift, fd_ud)):
+        a, b = J[np.ix_(chain_dofs, chain_dofs)], fd[np.ix_(chain_dofs, chain_dofs)]
+        scale = np.maximum(np.abs(a).max(1), 1e-8 * np.abs(J0[chain_dofs]).max(1))
+        err = np.abs(a - b).max(1) / scale
+        assert err.max() <= 1e-6, (chain_dofs[err.argmax()], err.max())
+        for rows in blocks.values():                # and each block on its own scale
+            for cols in blocks.values():
                 a, b = J[np.ix_(rows, cols)], fd[np.ix_(rows, cols)]
-                scale = max(np.abs(a).max(), 1e-8 * np.abs(J0[rows]).max())
-                assert np.abs(a - b).max() <= 1e-6 * scale, (rname, cname)
+                scale = max(np.abs(a).max(), np.abs(b).max())
+                assert np.abs(a - b).max() <= 1e-6 * scale
     # the check saw every coupling: pressure gradients, squeeze, moving nodes, loads
     assert np.abs(J0[np.ix_(blocks["p"], blocks["uz"])]).max() > 0
     assert np.abs(Jshift[np.ix_(blocks["p"], blocks["ur"])]).max() > 0
     assert np.abs(J0[np.ix_(blocks["ur"], blocks["uz"])]).max() > 0
-    if normal:
-        assert np.abs(J0[np.ix_(blocks["uz"], blocks["ur"])]).max() > 0
+    assert np.abs(Jshift[np.ix_(blocks["uz"], blocks["ur"])]).max() > 0   # Eq. 33's rates
 
 
 @pytest.mark.parametrize("end", ["min_z", "max_z"])
@@ -119,9 +133,10 @@ def test_rigid_limit_is_the_film_only_scheme(tmp_path, end):
     """On the same nodes (y, h, dh/dt) the film rows are the ControlVolumeScheme's rows of the
     film-only scenes, residual and pressure Jacobian, to round-off: at u = 0 (the seal's own
     curved surface over the rod), and on a deformed seal with the scheme built on the current
-    y = Z + u_z and h = R + u_r - r."""
+    y = Z + u_z and h = R + u_r - r. The nodal shear forces are the film-only output's shear
+    stress (Eq. 32-33, from the scheme's pressure gradient) times A M_i."""
     mesh, layout = coarse(tmp_path)
-    term = make_term(mesh, layout, "patir-cheng", end)
+    term = make_term(mesh, layout, "patir-cheng", end, shear=True)
     c, t = layout.rod_nodes, 0.3
     ur, uz, pd = layout.udofs[c, 0], layout.udofs[c, 1], layout.film_dofs
     deformed, ud = seal_state(mesh, layout, 2, t)
@@ -145,6 +160,12 @@ def test_rigid_limit_is_the_film_only_scheme(tmp_path, end):
         np.add.at(Jp, scheme.pattern, vals)
         J = Problem(layout.n, [term]).jacobian_dense(t, u, ud, 5.0)
         assert np.allclose(J[np.ix_(pd, pd)], Jp, rtol=1e-13, atol=0)
+        tau = shear_stress(y, h, hd, scheme.pressure_gradient(t, u[pd], h, hd), 80.0, ETA,
+                           H_FLOOR, 0.3)
+        want = tau * AREA * control_volumes(y)
+        assert np.allclose(term.shear_forces(t, u, ud), want, rtol=1e-12,
+                           atol=1e-12 * np.abs(want).max())
+        assert np.allclose(f[uz], -want, rtol=1e-12, atol=1e-12 * np.abs(want).max())
 
 
 def test_mass_balance_and_radial_force(tmp_path):
@@ -227,7 +248,8 @@ def test_pressurised_oring_with_film(tmp_path):
       rod; and the seal's axial balance closes: the side walls take the fluid's axial load
       (pressure side flank plus the film's surface-normal part);
     * v = 100 mm/s out of the pressure side (from the v = 0 state): hydrodynamic lift, a film
-      peak above p_in, a thicker film, less asperity load and more leakage.
+      peak above p_in, a thicker film, less asperity load, more leakage, and the fluid shear
+      drags the seal along.
     """
     from conftest import scene
     from sealts.contact.rigid import GrooveContact, RodContact
@@ -283,14 +305,16 @@ def test_pressurised_oring_with_film(tmp_path):
         p = u[lay.film_dofs]
         results.append(dict(p=p, q=film.flows(4.0, u, np.zeros(lay.n)),
                             h_min=rod_c.gap(4.0, u).min(), asperity=rod_c.forces(4.0, u).sum(),
-                            film=film.forces(4.0, u).sum()))
+                            film=film.forces(4.0, u).sum(),
+                            shear=film.shear_forces(4.0, u).sum()))
         if v == 0.0:
             assert p[0] == pytest.approx(1.0, abs=1e-12) and p[-1] == pytest.approx(0.0, abs=1e-12)
             assert np.all(np.diff(p) <= 1e-9) and p.min() >= -1e-9
             assert 0.0 < p[chain.size // 2] < 1.0               # it falls inside the contact
             walls = groove.reactions(4.0, u)
             fz = load.forces(4.0, u)
-            fluid_z = fz[:, 1].sum() + fz[:, 3].sum() + film.axial_forces(4.0, u).sum()
+            fluid_z = (fz[:, 1].sum() + fz[:, 3].sum() + film.axial_forces(4.0, u).sum()
+                       + film.shear_forces(4.0, u).sum())
             wall_z = walls["wall_pressure_side"] + walls["wall_atmosphere_side"]
             assert fluid_z > 0 and wall_z == pytest.approx(-fluid_z, rel=1e-6)
     still, moving = results
@@ -302,3 +326,4 @@ def test_pressurised_oring_with_film(tmp_path):
     assert moving["h_min"] > still["h_min"]
     assert moving["asperity"] < still["asperity"]
     assert moving["q"][1] > 10 * still["q"][1]
+    assert moving["shear"] > 0                               # the rod drags the seal along

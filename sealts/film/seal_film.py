@@ -53,15 +53,39 @@ Exact Jacobian (the chain rule through the gap provider, docs/design.md):
 * dF_r,i/dp_i = A L_i, dF_r,i/du_z,hi = p_i A / 2, dF_r,i/du_z,lo = -p_i A / 2;
   dF_z,i/dp_i = -A (r_hi - r_lo)/2, dF_z,i/du_r,hi = -p_i A / 2, dF_z,i/du_r,lo = p_i A / 2.
 
-The fluid shear stress on the seal (Eq. 32-34) is not applied as an axial load yet: it is
-about two orders of magnitude below the solid friction in the paper's O-ring.
+* with ``shear=True`` (the paper's model), the fluid shear force on the u_z rows
+  (Eq. 32-34), positive in +y, the rod's direction of motion for v > 0:
+
+      tau_i = eta v / h_eff_i - (h_eff_i / 2) (dp/dy)_i - eta (d(dh/dt)/dy)_i,   (Eq. 32)
+      (dp/dy)_i = (c(h_i) - q_i) / k(h_i),                                     (Eq. 13)
+      F_s,i = tau_i A L_i,                                                     (Eq. 34)
+
+  with the nodal flow q_i the mean of the two element flows (the boundary flow at the ends,
+  as :meth:`ControlVolumeScheme.pressure_gradient`) and the squeeze-rate gradient the
+  beta-weighted difference of Eq. 33, as the film-only output
+  (:func:`sealts.film.quantities.shear_stress`). Its Jacobian runs through the same flux
+  derivatives, the storage at the ends, h in k, c and h_eff, the rates (TS shift) and the
+  element lengths.
 """
+import numba
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
 from ..problem import Term
 from .flow_factors import FlowFactors
+from .gap import h_eff
 from .reynolds_fv import conductance, element_fluxes, storage
+
+
+@numba.njit(cache=True)
+def nodal_conductance(h, eta, h_floor, model, par, th, tpp, tps):
+    """Per node: h_eff, dh_eff/dh, 1/k, d(1/k)/dh, c/v, d(c/v)/dh (rows of a (6, n) array)."""
+    out = np.empty((6, h.size))
+    for i in range(h.size):
+        out[0, i], out[1, i] = h_eff(h[i], h_floor)
+        out[2, i], out[3, i], out[4, i], out[5, i] = conductance(h[i], eta, h_floor, model,
+                                                                 par, th, tpp, tps)
+    return out
 
 
 def _as_function(x):
@@ -78,7 +102,7 @@ class SealFilmTerm(Term):
 
     def __init__(self, X, chain, pdofs, r_rod, v, eta, p_in, p_out, area, ff=None,
                  h_floor=1e-5, squeeze=True, pressurised_end="min_z", udofs=None,
-                 rod_rate=None, h_ref=1e-3, surface_normal=False):
+                 rod_rate=None, h_ref=1e-3, surface_normal=False, shear=True, beta=0.5):
         """``X``: reference coordinates (r, z) of the mesh nodes; ``chain``: the rod-side
         nodes ordered by z (``mesh.chain("rod_side")``); ``pdofs``: their film-pressure dofs
         in the same order (``Layout.film_dofs``); ``udofs``: node -> (u_r, u_z) dofs
@@ -89,7 +113,8 @@ class SealFilmTerm(Term):
         other; ``area``: A of Eq. 31 (mm); ``ff``: :class:`FlowFactors` (none by default);
         ``h_floor`` (mm): the gap regularisation of :mod:`sealts.film.gap`; ``squeeze``:
         with the dh/dt term; ``surface_normal``: also the axial part of the pressure on the
-        seal's inclined surface (module docstring). The film rows are scaled by their
+        seal's inclined surface; ``shear``: the fluid shear force (Eq. 32-34) with the
+        weight ``beta`` of Eq. 33 (module docstring). The film rows are scaled by their
         diagonal for the reference chain at a uniform gap ``h_ref`` (mm) until
         :meth:`set_row_scale` fixes them at a state."""
         if pressurised_end not in ("min_z", "max_z"):
@@ -136,6 +161,13 @@ class SealFilmTerm(Term):
         if surface_normal:
             rows += [uz, uz, uz]
             cols += [pd, ur[self.hi], ur[self.lo]]
+        self.shear, self.beta = shear, beta
+        if shear:  # the pattern of the shear force, from the code that computes its values
+            dummy = np.zeros(m)
+            _, srows, scols, _ = self._shear(0.0, self.Z, dummy + 1e-3, dummy, dummy, 1.0,
+                                             v=1.0)
+            rows.append(uz[srows])
+            cols.append(scols)
         self.rows = np.concatenate(rows).astype(np.int64)
         self.cols = np.concatenate(cols).astype(np.int64)
         self.row_scale = self._reference_row_scale(h_ref)
@@ -176,8 +208,9 @@ class SealFilmTerm(Term):
         self.row_scale = np.ones(self.m)
         self.row_scale[1:-1] = 1.0 / (dqa[1:] - dqb[:-1])
 
-    def _fluxes(self, t, y, h, hd, p):
-        q, dqa, dqb, dha, dhb = element_fluxes(y, h, p, self.v(t), self.eta, self.h_floor,
+    def _fluxes(self, t, y, h, hd, p, v=None):
+        v = self.v(t) if v is None else v
+        q, dqa, dqb, dha, dhb = element_fluxes(y, h, p, v, self.eta, self.h_floor,
                                                *self._ffargs())
         s, ds_dh, ds_dhd = storage(y, h, hd, self.h_floor)
         return q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd
@@ -217,6 +250,73 @@ class SealFilmTerm(Term):
     def pressure(self, u):
         return np.asarray(u[self.pd], float)
 
+    def _shear(self, t, y, h, hd, p, shift, v=None):
+        """Fluid shear force on the chain nodes (Eq. 32-34, N, +y) and the COO parts of
+        d(-F_s)/dU + shift d(-F_s)/dU': (F_s, rows as chain indices, cols, values)."""
+        m, ur, uz, pd, A = self.m, self.ur, self.uz, self.pd, self.area
+        v = self.v(t) if v is None else v
+        eta, beta = self.eta, self.beta
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = self._fluxes(t, y, h, hd, p, v)
+        he, dhe, ik, dik, cv, dcv = nodal_conductance(h, eta, self.h_floor, *self._ffargs())
+        L = np.diff(y)
+        qn = np.empty(m)
+        qn[1:-1] = 0.5 * (q[:-1] + q[1:])
+        qn[0], qn[-1] = q[0] + s[0], q[-1] - s[-1]
+        dpdy = (v * cv - qn) * ik
+        dd = np.diff(hd) / L
+        g = np.empty(m)
+        g[0], g[-1] = dd[0], dd[-1]
+        g[1:-1] = beta * dd[:-1] + (1.0 - beta) * dd[1:]
+        tau = eta * v / he - 0.5 * he * dpdy - eta * g
+        AL = A * self.lengths(y)
+        F = tau * AL
+        # d tau / d(h_i) at fixed q_i and g_i, d tau / d q_i, d tau / d g_i = -eta
+        dtau_dh = (-eta * v * dhe / he**2 - 0.5 * dhe * dpdy
+                   - 0.5 * he * (v * dcv * ik + (v * cv - qn) * dik))
+        cq = AL * 0.5 * he * ik
+        cg = -eta * AL
+        i = np.arange(m)
+        a = np.arange(m - 1)
+        b = a + 1
+        rows, cols, vals = [i, i, i], [ur, uz[self.hi], uz[self.lo]], \
+            [AL * dtau_dh, 0.5 * A * tau, -0.5 * A * tau]
+        # q_i through the element flows: mean of two inside, the end elements' own at the ends
+        wa = np.where(a == 0, 1.0, 0.5) * cq[a]
+        wb = np.where(b == m - 1, 1.0, 0.5) * cq[b]
+        dqL = (p[1:] - p[:-1]) * dqa / L
+        ecols = [pd[a], pd[b], ur[a], ur[b], uz[a], uz[b]]
+        for col, d in zip(ecols, (dqa, dqb, dha, dhb, -dqL, dqL)):
+            rows += [a, b]
+            cols += [col, col]
+            vals += [wa * d, wb * d]
+        # q_1 = q_3/2 + S_1 and q_n = q_n-1/2 - S_n: the end storage, M = half an element
+        for k, nb, sign in ((0, 1, 1.0), (m - 1, m - 2, -1.0)):
+            c = sign * cq[k]
+            rate = dhe[k] * hd[k]
+            rows += [[k], [k], [k]]
+            cols += [[ur[k]], [uz[nb]], [uz[k]]]
+            side = 1.0 if nb > k else -1.0
+            vals += [[c * (ds_dh[k] + shift * ds_dhd[k])], [c * 0.5 * side * rate],
+                     [-c * 0.5 * side * rate]]
+        # the squeeze-rate gradient: d_e = (hd_b - hd_a) / L_e, weighted as in Eq. 33
+        ga = np.where(a == 0, 1.0, 1.0 - beta) * cg[a]
+        gb = np.where(b == m - 1, 1.0, beta) * cg[b]
+        for col, d in zip((ur[a], ur[b], uz[a], uz[b]),
+                          (-shift / L, shift / L, dd / L, -dd / L)):
+            rows += [a, b]
+            cols += [col, col]
+            vals += [ga * d, gb * d]
+        rows = np.concatenate(rows)
+        cols = np.concatenate(cols)
+        vals = -np.concatenate(vals)                  # the residual subtracts the force
+        return F, rows, cols, vals
+
+    def shear_forces(self, t, u, udot=None):
+        """Axial fluid shear force on each chain node (N, +y), Eq. 32-34 (computed whether
+        or not ``shear`` puts it into the residual)."""
+        y, h, hd, p = self.film(t, u, udot)
+        return self._shear(t, y, h, hd, p, 0.0)[0]
+
     # ---- Term interface ------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
         r, _, _ = self.balance(t, u, udot)
@@ -228,6 +328,8 @@ class SealFilmTerm(Term):
         np.subtract.at(f, self.ur, self.forces(t, u))
         if self.surface_normal:
             np.subtract.at(f, self.uz, self.axial_forces(t, u))
+        if self.shear:
+            np.subtract.at(f, self.uz, self.shear_forces(t, u, udot))
 
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
@@ -248,4 +350,6 @@ class SealFilmTerm(Term):
         if self.surface_normal:
             dr = self.lengths(self.R + u[self.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
+        if self.shear:
+            vals.append(self._shear(t, y, h, hd, p, shift_hd)[3])
         return np.concatenate(vals)
