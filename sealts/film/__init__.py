@@ -8,4 +8,5 @@ asperity      exponential asperity-contact law (Eq. 44)
 reynolds_fv   default mass-conserving control-volume scheme for Eq. 13
 paper_scheme  the paper's weighted pressure-gradient integration (Eq. 15-28)
 quantities    shear stress, loads, friction and flow rate (Eq. 29-42)
+seal_film     the film on the deforming seal's rod side, coupled to its displacements
 """

@@ -215,11 +215,12 @@ class SealFilmTerm(Term):
         s, ds_dh, ds_dhd = storage(y, h, hd, self.h_floor)
         return q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd
 
-    def balance(self, t, u, udot=None):
+    def balance(self, t, u, udot=None, fluxes=None):
         """The unscaled nodal balances M_i dh_eff_i/dt + q_{i+1/2} - q_{i-1/2} (mm^2/s), all
         nodes (the end ones are the boundary flows' reactions), and the element flows q."""
-        y, h, hd, p = self.film(t, u, udot)
-        q, _, _, _, _, s, _, _ = self._fluxes(t, y, h, hd, p)
+        if fluxes is None:
+            fluxes = self._fluxes(t, *self.film(t, u, udot))
+        q, s = fluxes[0], fluxes[5]
         r = s.copy()
         r[:-1] += q
         r[1:] -= q
@@ -250,13 +251,16 @@ class SealFilmTerm(Term):
     def pressure(self, u):
         return np.asarray(u[self.pd], float)
 
-    def _shear(self, t, y, h, hd, p, shift, v=None):
+    def _shear(self, t, y, h, hd, p, shift, v=None, fluxes=None):
         """Fluid shear force on the chain nodes (Eq. 32-34, N, +y) and the COO parts of
-        d(-F_s)/dU + shift d(-F_s)/dU': (F_s, rows as chain indices, cols, values)."""
+        d(-F_s)/dU + shift d(-F_s)/dU': (F_s, rows as chain indices, cols, values).
+        ``fluxes``: :meth:`_fluxes` at this state, if already known."""
         m, ur, uz, pd, A = self.m, self.ur, self.uz, self.pd, self.area
         v = self.v(t) if v is None else v
         eta, beta = self.eta, self.beta
-        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = self._fluxes(t, y, h, hd, p, v)
+        if fluxes is None:
+            fluxes = self._fluxes(t, y, h, hd, p, v)
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = fluxes
         he, dhe, ik, dik, cv, dcv = nodal_conductance(h, eta, self.h_floor, *self._ffargs())
         L = np.diff(y)
         qn = np.empty(m)
@@ -319,8 +323,9 @@ class SealFilmTerm(Term):
 
     # ---- Term interface ------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
-        r, _, _ = self.balance(t, u, udot)
-        p = u[self.pd]
+        y, h, hd, p = self.film(t, u, udot)
+        fluxes = self._fluxes(t, y, h, hd, p)
+        r, _, _ = self.balance(t, u, udot, fluxes)
         r = r * self.row_scale
         r[0] = p[0] - self.p_first(t)
         r[-1] = p[-1] - self.p_last(t)
@@ -329,7 +334,7 @@ class SealFilmTerm(Term):
         if self.surface_normal:
             np.subtract.at(f, self.uz, self.axial_forces(t, u))
         if self.shear:
-            np.subtract.at(f, self.uz, self.shear_forces(t, u, udot))
+            np.subtract.at(f, self.uz, self._shear(t, y, h, hd, p, 0.0, fluxes=fluxes)[0])
 
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
@@ -351,5 +356,6 @@ class SealFilmTerm(Term):
             dr = self.lengths(self.R + u[self.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
         if self.shear:
-            vals.append(self._shear(t, y, h, hd, p, shift_hd)[3])
+            vals.append(self._shear(t, y, h, hd, p, shift_hd,
+                                    fluxes=(q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd))[3])
         return np.concatenate(vals)
