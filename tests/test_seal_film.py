@@ -1,8 +1,10 @@
-"""The film on the deforming seal (SealFilmTerm): exact Jacobian, rigid limit, mass balance.
+"""The film on the deforming seal (SealFilmTerm): exact Jacobian, rigid limit, mass balance,
+and a coupled solve of the coarse O-ring.
 
 Each test checks the coupled term against something computed another way: central
-differences of its residual, the rigid-gap ControlVolumeScheme of the film-only scenes on the
-same nodes, and a film volume differenced in time and a trapezoid integral of p.
+differences of its residual, the rigid-gap ControlVolumeScheme and shear_stress() of the
+film-only scenes on the same nodes, a film volume differenced in time, trapezoid integrals of
+p, and the axial force balance of the solved seal.
 """
 import numpy as np
 import pytest
