@@ -4,6 +4,8 @@ Also ``python -m sealts``. Subcommands:
 
   run    run a scene (the embedded default scene without one); every option that sealts does
          not know goes to PETSc (-ts_type, -snes_monitor, -pc_type, -log_view, -help, ...)
+  ihl    inverse-hydrodynamic estimate of a seal scene's film and leakage per stroke, from
+         its dry mounted (and pressurised) contact pressure at rod.velocity
   check  validate a scene file and print nothing else
   keys   list every scene key with its unit, range and default
 
@@ -15,6 +17,7 @@ from pathlib import Path
 from .scene import SceneError, default_scene, load_scene
 
 USAGE = """usage: sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]
+       sealts ihl SCENE.toml [-o OUTDIR] [PETSc options ...]
        sealts check SCENE.toml
        sealts keys"""
 
@@ -67,16 +70,23 @@ def _init_petsc(argv, scene):
     return PETSc
 
 
-def run(args):
+def run(args, command="run"):
     scene_path, outdir, petsc_args = _split_run_args(args)
+    if command == "ihl" and scene_path is None:
+        raise SceneError("ihl needs a seal scene file")
     scene = load_scene(scene_path) if scene_path else default_scene()
-    out = Path(outdir) if outdir else Path("results") / scene.name
+    out = Path(outdir) if outdir else Path("results") / (
+        scene.name + ("_ihl" if command == "ihl" else ""))
     _prepare_outdir(out)
     PETSc = _init_petsc(petsc_args, scene)
     comm = PETSc.COMM_WORLD
     from .io import Writer
     writer = Writer(out, comm, plots=scene.output.plot)
     try:
+        if command == "ihl":
+            from .problem.ihl_run import run_ihl
+            run_ihl(scene, writer, comm)
+            return 0
         if scene.model == "seal":
             from .problem.seal_run import run_seal
             summary = run_seal(scene, writer, comm)
@@ -110,8 +120,8 @@ def main(argv=None):
         return 0 if argv else 2
     cmd, rest = argv[0], argv[1:]
     try:
-        if cmd == "run":
-            return run(rest)
+        if cmd in ("run", "ihl"):
+            return run(rest, cmd)
         if cmd == "check":
             if len(rest) != 1:
                 raise SceneError("check takes one scene file")
