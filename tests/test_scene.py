@@ -134,6 +134,14 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
      "hold.p_end needs the pressurised state: set fluid.p_in"),
     ("[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\nt_end = 1e-4\n"
      "[fluid]\np_in = 1.0\n", "must lie below hold.t_end"),
+    ("[stroke]\nvelocity = 'sine'\nt_end = 1.0\noutput_times = [2.0]\n",
+     "stroke.output_times has 2 s after stroke.t_end = 1 s"),
+    ("[stroke]\nvelocity = 'table'\n", "stroke.table must name a CSV file"),
+    ("[stroke]\nvelocity = 'table'\ntable = 'nope.csv'\n", "stroke.table: no such file"),
+    ("[stroke]\nvelocity = 'sine'\ntable = 'v.csv'\n", "stroke.table is only used with"),
+    ("[stroke]\nvelocity = 'sinus'\n", "stroke.velocity must be one of"),
+    ("[stroke]\nvelocity = 'sine'\n[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\n"
+     "[fluid]\np_in = 1.0\n", "a scene runs either the stroke or the pressure hold"),
 ])
 def test_impossible_seal_geometry(extra, message):
     base = (CONFIGS / "oring_mount.toml").read_text()

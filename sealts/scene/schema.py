@@ -171,6 +171,23 @@ class Hold:
 
 
 @dataclass(frozen=True)
+class Stroke:
+    velocity: str = option("none", choices=("none", "constant", "ramp-hold", "sine", "table"),
+                           doc="step 3: the rod's velocity law in the stroke (none: no stroke); "
+                               "+ is the outstroke, from the pressurised side out")
+    v_max: float = option(500.0, unit="mm/s",
+                          doc="constant speed, ramp-hold end speed or sine amplitude")
+    t_ramp: float = option(1.0, unit="s", gt=0.0, doc="ramp-hold: time to reach v_max")
+    period: float = option(10.0, unit="s", gt=0.0, doc="sine: period of one cycle")
+    table: str = option("", doc="velocity = 'table': CSV with columns t (s) and v (mm/s)")
+    t_end: float = option(10.0, unit="s", gt=0.0, doc="end of the stroke step")
+    dt: float = option(1e-4, unit="s", gt=0.0, doc="first time step (TS adapts it)")
+    rtol: float = option(1e-3, gt=0.0, doc="TS relative error tolerance of the stroke")
+    output_times: list[float] = option([], unit="s", gt=0.0,
+                                       doc="times of profile output; t_end is always written")
+
+
+@dataclass(frozen=True)
 class Output:
     plot: bool = option(True, doc="write PNG plots")
     progress: bool = option(True, doc="print t, dt and Newton iterations while running")
@@ -196,6 +213,7 @@ class Scene:
     viscoelastic: Viscoelastic = option(Viscoelastic(),
                                         doc="Prony series and WLF shift (model = seal)")
     hold: Hold = option(Hold(), doc="viscoelastic pressure step and hold (model = seal)")
+    stroke: Stroke = option(Stroke(), doc="transient stroke with the film (model = seal)")
     output: Output = option(Output(), doc="what to write")
     petsc: dict = field(default_factory=dict, metadata=dict(doc="default PETSc options"))
     source: str = field(default="<embedded>", metadata=dict(doc="where the scene came from"))
@@ -298,6 +316,35 @@ def _check_viscoelastic(s):
                              f"{ve.t_min:g} s must lie below hold.t_end = {hold.t_end:g} s")
 
 
+def _check_stroke(s, base):
+    st = s.stroke
+    if st.velocity == "none":
+        return
+    if s.hold.p_end != 0.0:
+        raise SceneError("stroke.velocity and hold.p_end: a scene runs either the stroke or "
+                         "the pressure hold as its step 3")
+    late = [t for t in st.output_times if t > st.t_end]
+    if late:
+        raise SceneError(f"stroke.output_times has {late[0]:g} s after stroke.t_end = "
+                         f"{st.t_end:g} s")
+    if st.dt >= st.t_end:
+        raise SceneError(f"stroke.dt = {st.dt:g} s must be below stroke.t_end = {st.t_end:g} s")
+    if st.velocity == "table":
+        from ..contact.rod_motion import read_velocity_table
+        if not st.table:
+            raise SceneError("stroke.table must name a CSV file with stroke.velocity = 'table'")
+        path = Path(st.table) if Path(st.table).is_absolute() else base / st.table
+        if not path.is_file():
+            raise SceneError(f"stroke.table: no such file {path}")
+        try:
+            read_velocity_table(path)
+        except ValueError as e:
+            raise SceneError(f"stroke.table: {e}") from None
+    elif st.table:
+        raise SceneError(f"stroke.table is only used with stroke.velocity = 'table' "
+                         f"(velocity is {st.velocity!r})")
+
+
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
     if s.model == "seal":
@@ -310,6 +357,7 @@ def _check_consistency(s, base):
             raise SceneError("material.c01 must be > 0 MPa with material.model = "
                              "'mooney-rivlin'")
         _check_viscoelastic(s)
+        _check_stroke(s, base)
         return
     a, g, f = s.analysis, s.gap, s.film
     if a.type == "transient":
@@ -367,7 +415,10 @@ def scene_from_table(table, source="<table>", base=None):
     seal = scene.seal
     if seal.mesh_file and not Path(seal.mesh_file).is_absolute():
         seal = replace(seal, mesh_file=str((base / seal.mesh_file).resolve()))
-    return replace(scene, petsc=petsc, source=source, film=film, seal=seal)
+    stroke = scene.stroke
+    if stroke.table and not Path(stroke.table).is_absolute():
+        stroke = replace(stroke, table=str((base / stroke.table).resolve()))
+    return replace(scene, petsc=petsc, source=source, film=film, seal=seal, stroke=stroke)
 
 
 def load_scene(path):
