@@ -95,7 +95,16 @@ def run(args, command="run"):
             summary = run_film(scene, writer, comm)
     finally:
         writer.close()
-    if comm.getRank() == 0 and scene.output.progress and scene.model == "seal":
+    if comm.getRank() == 0 and scene.output.progress and "stroke" in summary:
+        st = summary["stroke"]
+        print(f"{scene.name}: leakage {st['leakage_out']:.4g} mm^3 out at the atmosphere side "
+              f"(outstroke {st['outstroke_transport']:.4g}, instroke "
+              f"{st['instroke_transport']:.4g}); peak friction {st['peak_friction_outstroke']:.4g}"
+              f" N out, {st['peak_friction_instroke']:.4g} N in; min h "
+              f"{st['h_min'] * 1e3:.4g} um  ({summary['wall_time_s']:.1f} s wall)")
+        print(f"written: {out}/summary.json, series.csv, stroke_profiles.csv, "
+              "fields.xdmf/.h5, PNG plots")
+    elif comm.getRank() == 0 and scene.output.progress and scene.model == "seal":
         r = summary["results"]
         print(f"{scene.name}: contact force {r['contact_force_total']:.6g} N "
               f"({r['contact_force_per_length']:.6g} N/mm), width {r['contact_width']:.4g} mm, "

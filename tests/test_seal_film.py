@@ -329,3 +329,38 @@ def test_pressurised_oring_with_film(tmp_path):
     assert moving["asperity"] < still["asperity"]
     assert moving["q"][1] > 10 * still["q"][1]
     assert moving["shear"] > 0                               # the rod drags the seal along
+
+
+@pytest.mark.parametrize("end", ["min_z", "max_z"])
+def test_leakage_term_jacobian_and_flows(tmp_path, end):
+    """The leakage ODEs dV/dt = Q (LeakageTerm): their flows are SealFilmTerm.flows, and their
+    Jacobian in U and U' (with the shift) matches central differences to 1e-6 of each row's
+    largest entry."""
+    from sealts.film.seal_film import LeakageTerm
+    mesh, layout = coarse(tmp_path)
+    term = make_term(mesh, layout, "patir-cheng", end)
+    n = layout.n + 2
+    leak = LeakageTerm(term, [layout.n, layout.n + 1])
+    t = 0.3
+    u0, ud0 = seal_state(mesh, layout, 5, t)
+    u, ud = np.zeros(n), np.zeros(n)
+    u[:layout.n], ud[:layout.n] = u0, ud0
+    ud[layout.n:] = (0.7, -0.2)
+    assert leak.flows(t, u, ud) == pytest.approx(term.flows(t, u0, ud0), rel=1e-12)
+    problem = Problem(n, [leak])
+    shift = 23.0
+    J0 = problem.jacobian_dense(t, u, ud, 0.0)
+    Js = (problem.jacobian_dense(t, u, ud, shift) - J0) / shift
+    rows = [layout.n, layout.n + 1]
+    for J, which in ((J0, "u"), (Js, "ud")):
+        fd = np.zeros((2, n))
+        for j in np.unique(leak.cols):
+            e = np.zeros(n)
+            h = 1e-2 if which == "ud" else (1e-6 if j in layout.film_dofs else 1e-8)
+            e[j] = h
+            a, b = (u + e, ud) if which == "u" else (u, ud + e)
+            c, d = (u - e, ud) if which == "u" else (u, ud - e)
+            fd[:, j] = (problem.residual(t, a, b)[rows] - problem.residual(t, c, d)[rows]) / (2 * h)
+        err = np.abs(J[rows] - fd).max(1) / np.abs(J[rows]).max(1)
+        assert err.max() <= 1e-6, (which, err)
+    assert np.abs(Js[rows][:, layout.udofs[layout.rod_nodes, 0]]).max() > 0   # squeeze

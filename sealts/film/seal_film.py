@@ -359,3 +359,72 @@ class SealFilmTerm(Term):
             vals.append(self._shear(t, y, h, hd, p, shift_hd,
                                     fluxes=(q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd))[3])
         return np.concatenate(vals)
+
+
+class LeakageTerm(Term):
+    """The leakage volumes of a :class:`SealFilmTerm` as ODE unknowns (Eq. 41-42),
+
+        dV_in/dt = Q_in,   dV_out/dt = Q_out,
+
+    at the dofs ``vdofs`` = (V_in, V_out), so TS integrates them with the same BDF formula as
+    the film: V_in - V_out then equals the growth of the film volume A sum M_i h_eff_i to the
+    order of the change of M_i. The end flows in +y (Eq. 41, per unit circumference),
+
+        q_first = q_1/2 + M_1 dh_eff_1/dt,      q_last = q_{n-1/2} - M_n dh_eff_n/dt,
+
+    are Q_in = A q_first, Q_out = A q_last for a film pressurised at min z (signs and ends
+    swap for max z). Exact Jacobian through the element flux q (p, h, L of the end element)
+    and the storage (h, M, and dh/dt with the TS shift)."""
+
+    def __init__(self, film, vdofs):
+        self.film = film
+        self.vd = np.asarray(vdofs, np.int64)
+        f = film
+        m = f.m
+        # per end: the end element's p_a, p_b, u_r,a, u_r,b, u_z,a, u_z,b
+        first = [f.pd[0], f.pd[1], f.ur[0], f.ur[1], f.uz[0], f.uz[1]]
+        last = [f.pd[m - 2], f.pd[m - 1], f.ur[m - 2], f.ur[m - 1], f.uz[m - 2], f.uz[m - 1]]
+        self._cols = (np.array(first), np.array(last))
+        in_end = 0 if f.pressurised_end == "min_z" else 1
+        self._ends = (in_end, 1 - in_end)                  # which end each V row reads
+        self._sign = 1.0 if in_end == 0 else -1.0
+        self.rows = np.concatenate([self.vd, np.repeat(self.vd, 6)])
+        self.cols = np.concatenate([self.vd] + [self._cols[e] for e in self._ends])
+
+    def _end_flows(self, t, u, udot, shift):
+        """(q_first, q_last) and their derivatives by the six columns of each end element
+        (plus shift times those by U')."""
+        f = self.film
+        y, h, hd, p = f.film(t, u, udot)
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = f._fluxes(t, y, h, hd, p)
+        shift_hd = shift if (f.squeeze and udot is not None) else 0.0
+        out = []
+        for e, node, sgn in ((0, 0, 1.0), (-1, -1, -1.0)):
+            L = y[e] - y[e - 1] if e == -1 else y[1] - y[0]
+            dqL = (p[1] - p[0] if e == 0 else p[-1] - p[-2]) * dqa[e] / L
+            M = 0.5 * L
+            rate = s[node] / M                              # dS/dM
+            d = np.array([dqa[e], dqb[e], dha[e], dhb[e], -dqL, dqL])
+            ds = ds_dh[node] + shift_hd * ds_dhd[node]
+            k = 2 if node == 0 else 3                       # u_r of the end node
+            d[k] += sgn * ds
+            d[4] += sgn * (-0.5 * rate)
+            d[5] += sgn * 0.5 * rate
+            out.append((q[e] + sgn * s[node], d))
+        return out
+
+    def flows(self, t, u, udot=None):
+        """(Q_in, Q_out) in mm^3/s."""
+        ends = self._end_flows(t, u, udot, 0.0)
+        A, sg = self.film.area, self._sign
+        return tuple(sg * A * ends[e][0] for e in self._ends)
+
+    def add_residual(self, t, u, udot, f):
+        q_in, q_out = self.flows(t, u, udot)
+        f[self.vd[0]] += udot[self.vd[0]] - q_in
+        f[self.vd[1]] += udot[self.vd[1]] - q_out
+
+    def jacobian_values(self, t, u, udot, shift):
+        ends = self._end_flows(t, u, udot, shift)
+        A, sg = self.film.area, self._sign
+        return np.concatenate([[shift, shift]] + [-sg * A * ends[e][1] for e in self._ends])

@@ -23,6 +23,9 @@ def plot_profiles(profiles, path):
             ax[1].plot(pr["y"], pr[k], style, label=f"{k}, {lab}")
         for k, style in zip(shears, ("-", "--")):
             ax[2].plot(pr["y"], pr[k], style, label=f"{k}, {lab}")
+    h_all = np.concatenate([np.asarray(pr["h"]) for _, pr in profiles])
+    if h_all.min() > 0.0 and h_all.max() > 100.0 * h_all.min():
+        ax[0].set_yscale("log")      # a seal's film: um in the contact, mm in the wedges
     ax[0].set_ylabel("gap h [um]")
     ax[1].set_ylabel("pressure [MPa]")
     if shears:

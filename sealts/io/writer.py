@@ -6,7 +6,9 @@ OUTDIR/
   profiles.csv   long format: t, y, h, p, tau [, p_asperity, tau_solid]  (mm, MPa, s)
   series.csv     transient runs: one row per accepted step
   hold_profiles.csv  seal scenes with a viscoelastic hold: t (s of the hold), y, h, p_contact
-  profiles.png   film thickness (um) and pressure along y at each output time
+  stroke_profiles.csv  seal scenes with a stroke: t (s of the stroke), y, h, p, p_asperity,
+                 tau, tau_solid (film pressure and shear, asperity pressure and friction)
+  *profiles.png  film thickness (um), pressures and shear along y at each output time
   series.png     transient runs: flows, leakage and time step over time
 
 Only rank 0 writes. Rows are flushed as they come.
@@ -25,11 +27,12 @@ class Writer:
         self.root = comm.getRank() == 0
         self.plots = plots
         self._files = {}
-        self._profiles = []
+        self._profiles = {}
         self._series = []
         if self.root:
             self.dir.mkdir(parents=True, exist_ok=True)
-            for name in ("profiles.csv", "series.csv", "hold_profiles.csv", "summary.json"):
+            for name in ("profiles.csv", "series.csv", "hold_profiles.csv",
+                         "stroke_profiles.csv", "summary.json"):
                 (self.dir / name).unlink(missing_ok=True)
 
     def _csv(self, name, fields):
@@ -43,8 +46,7 @@ class Writer:
     def profile(self, t, prof, name="profiles.csv"):
         if not self.root:
             return
-        if name == "profiles.csv":
-            self._profiles.append((t, prof))
+        self._profiles.setdefault(name, []).append((t, prof))
         keys = ["t"] + list(prof)
         f, w = self._csv(name, keys)
         cols = [np.asarray(prof[k]) for k in prof]
@@ -73,8 +75,9 @@ class Writer:
         for f, _ in self._files.values():
             f.close()
         self._files.clear()
-        if self.plots and self._profiles:
+        if self.plots:
             from .plots import plot_profiles, plot_series
-            plot_profiles(self._profiles, self.dir / "profiles.png")
+            for name, profiles in self._profiles.items():
+                plot_profiles(profiles, self.dir / name.replace(".csv", ".png"))
             if self._series:
                 plot_series(self._series, self.dir / "series.png")

@@ -331,10 +331,14 @@ def run_seal(scene, writer, comm):
         y, h, p = model.contact_profile(t_end, u)
         writer.profile(t_end, {"y": y, "h": h, "p_contact": p})
     hold = scene.hold
-    hold_info = None
+    hold_info = stroke_info = None
     if hold.p_end != 0.0:
         u, res, hold_info, hold_counters = _run_hold(model, u, scene, writer, comm, say, res)
         counters.append(hold_counters)
+    if scene.stroke.velocity != "none":
+        from .stroke_run import run_stroke
+        u, stroke_info, stroke_counters = run_stroke(model, u, scene, writer, comm, say)
+        counters.append(stroke_counters)
     if writer.root:
         write_fields(str(writer.dir / "fields.xdmf"), model, u)
     c = type(counters[0])(*[sum(getattr(k, f) for k in counters)
@@ -343,6 +347,7 @@ def run_seal(scene, writer, comm):
     summary = {
         "scene": scene.name, "source": scene.source,
         "analysis": ("mount + pressurise + viscoelastic hold" if hold_info
+                     else "mount + pressurise + stroke" if stroke_info
                      else "mount + pressurise" if p_in != 0.0 else "mount"),
         "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
         "unknowns": model.n, "ranks": comm.getSize(),
@@ -354,6 +359,8 @@ def run_seal(scene, writer, comm):
     }
     if hold_info:
         summary["hold"] = hold_info
+    if stroke_info:
+        summary["stroke"] = stroke_info
     writer.summary(summary)
     return summary
 

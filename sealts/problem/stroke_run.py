@@ -1,0 +1,210 @@
+"""Step 3 of a seal scene: the transient stroke with the film (``[stroke] velocity``).
+
+From the pressurised long-term state of steps 1-2 (dry, pressure penetration settled), one
+monolithic DAE for seal plus film (paper Section 3.1.1, step 3):
+
+* unknowns: the displacements and the film pressure on the ``rod_side`` vertices, fields of
+  one Layout (:mod:`sealts.mesh.layout`);
+* terms: the hyperelastic seal (long-term material), the rod as the asperity contact
+  (Eq. 44-45) at its final radius, the frictionless groove, the fluid pressure on the free
+  surfaces the step-2 front wetted (the rod side excluded: the film carries it), and
+  :class:`sealts.film.seal_film.SealFilmTerm`: the transient Reynolds film (Eq. 13) on the
+  deforming rod side, with squeeze from U', its radial and surface-normal load, and the fluid
+  shear (Eq. 29-34), p_in at the pressure-side end of the film and p_out at the other;
+* the start: the film pressures are solved with the seal held, then seal and film together
+  at t = 0 (the hydrostatic film when v(0) = 0);
+* the rod's axial velocity v(t) (:mod:`sealts.contact.rod_motion`) drives the film; TS
+  steps the DAE with adaptive BDF and hits the law's kinks, reversals and output times.
+
+Leakage: Q_in enters the film at the pressure side, Q_out leaves it at the atmosphere side
+(Eq. 41); V_in and V_out (Eq. 42) are two more unknowns, dV/dt = Q
+(:class:`sealts.film.seal_film.LeakageTerm`), so TS integrates them with the film and
+V_in - V_out is the film's growth. The flows printed per step take U' as the step's
+difference quotient (output only). The transport per stroke direction sums the steps' V_out
+increments by the sign of v.
+
+Not yet in the stroke: solid friction (Eq. 46-48), viscoelasticity, updating the pressure
+penetration front during the stroke.
+"""
+import time
+
+import numpy as np
+
+from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
+from ..contact.rod_motion import motion_from_scene
+from ..film.seal_film import LeakageTerm, SealFilmTerm
+from ..mesh.layout import Layout
+from ..solid.pressure import PressureLoad
+from ..solid.term import SolidTerm
+from .film_run import flow_factors_of
+from .problem import Constraints, Problem
+
+
+class StrokeStep:
+    """The coupled seal + film DAE of the stroke, built on a pressurised SealModel."""
+
+    def __init__(self, model, u0, scene, comm=None):
+        self.model, self.scene = model, scene
+        self.motion = motion_from_scene(scene.stroke)
+        mesh, X = model.mesh, model.mesh.X
+        self.layout = lay = Layout(mesh, film=True)
+        ud = lay.udofs
+        axisym = model.axisym
+        self.solid = SolidTerm(X, mesh.conn, model.material, axisym, udofs=ud)
+        chain = lay.rod_nodes
+        a = scene.asperity
+        self.rod = RodContact(X, chain, lambda t: model.r_rod_final, model.rod.area,
+                              a.h_mix, a.p_mix, udofs=ud)
+        g = model.groove
+        trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
+        self.groove = GrooveContact(X, g.nodes, trib, axisym, lambda t: model.r_g_final,
+                                    g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
+                                    corner_radius=g.rho)
+        fl, fm = scene.fluid, scene.film
+        self.film = SealFilmTerm(X, chain, lay.film_dofs, lambda t: model.r_rod_final,
+                                 self.motion.v, fl.viscosity, fl.p_in, fl.p_out,
+                                 model.rod.area, ff=flow_factors_of(fm), h_floor=fm.h_floor,
+                                 squeeze=fm.squeeze, pressurised_end="min_z", udofs=ud,
+                                 surface_normal=True, shear=True, beta=fm.beta)
+        self.vdofs = np.array([lay.n, lay.n + 1])
+        self.leakage = LeakageTerm(self.film, self.vdofs)
+        self.n = lay.n + 2
+        terms = [self.solid, self.rod, self.groove, self.film, self.leakage]
+        self.load = None
+        old = getattr(model, "load", None)
+        if old is not None:
+            # step 2's wetting, without the rod side (the film's)
+            self.load = PressureLoad(X, mesh.conn, lambda t: fl.p_in, axisym,
+                                     old.edges[old.start, 0], udofs=ud, p_crit=old.p_crit)
+            rod_edges = {tuple(sorted(e)) for e in mesh.edges["rod_side"]}
+            on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges])
+            self.load.s0 = np.where(on_rod, 0.0, old.s0)
+            self.load.s1 = np.where(on_rod, 0.0, old.s1)
+            terms.append(self.load)
+        self.U0 = np.zeros(self.n)
+        self.U0[ud] = u0[model.udofs]
+        self.problem = Problem(self.n, terms, comm=comm, prefix="stroke_", linesearch="basic",
+                               snes_atol=1e-9 * model.force_scale)
+
+    def start(self):
+        """Film pressures with the seal held, then seal and film in equilibrium at t = 0."""
+        lay, comm, n = self.layout, self.problem.comm, self.n
+        U = self.U0.copy()
+        U[lay.film_dofs] = np.linspace(self.scene.fluid.p_in, self.scene.fluid.p_out,
+                                       lay.film_dofs.size)
+        held = np.concatenate([lay.udofs.ravel(), self.vdofs])
+        U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
+                    prefix="stroke_film_").solve_steady(U, 0.0)
+        self.film.set_row_scale(0.0, U)
+        statics = [t for t in self.problem.terms if t is not self.leakage]
+        start = Problem(n, statics, comm=comm, linesearch="basic",
+                        constraints=Constraints(self.vdofs, 0.0),
+                        snes_atol=1e-9 * self.model.force_scale, prefix="stroke_start_")
+        U = start.solve_steady(U, 0.0)
+        self.problem.counters.newton += start.counters.newton
+        return U
+
+    def displacement(self, U):
+        """The displacement-only vector of the SealModel's layout (for its outputs)."""
+        u = np.zeros(self.model.n)
+        u[self.model.udofs] = U[self.layout.udofs]
+        return u
+
+    def profile(self, t, U, Udot=None):
+        """Along the rod side: y (mm), h (mm), film pressure p and asperity pressure (MPa),
+        fluid shear tau and solid friction stress tau_solid (MPa, +y on the seal); the names
+        of the film-only scenes' profiles."""
+        f = self.film
+        y, h, _, p = f.film(t, U, Udot)
+        p_asp, _ = self.rod.pressure(t, U)
+        tau = f.shear_forces(t, U, Udot) / (f.area * f.lengths(y))
+        return {"y": y, "h": h, "p": p, "p_asperity": p_asp, "tau": tau,
+                "tau_solid": np.zeros_like(tau)}
+
+    def scalars(self, t, U, Udot=None):
+        """Forces on the seal (N): fluid shear (+y), radial film and asperity loads, flows."""
+        f = self.film
+        q_in, q_out = self.leakage.flows(t, U, Udot)
+        h = self.rod.gap(t, U)
+        y = f.film(t, U)[0]
+        touching = h < self.rod.h_mix
+        length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
+        shear = float(f.shear_forces(t, U, Udot).sum())
+        return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": 0.0,
+                "friction_total": shear,
+                "normal_load": float(f.forces(t, U).sum() + self.rod.forces(t, U).sum()),
+                "load_fluid": float(f.forces(t, U).sum()),
+                "load_asperity": float(self.rod.forces(t, U).sum()),
+                "Q_in": q_in, "Q_out": q_out, "V_in": float(U[self.vdofs[0]]),
+                "V_out": float(U[self.vdofs[1]]), "h_min": float(h.min()),
+                "asperity_contact_length": length,
+                "p_fluid_max": float(U[self.layout.film_dofs].max())}
+
+    def run(self, U0, t_end, dt0, rtol, output_times=(), on_step=None, on_stop=None):
+        m = self.motion
+        stops = sorted(set(output_times) | set(m.kinks(t_end)) | set(m.reversals(t_end)))
+        return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops, on_step=on_step,
+                                      on_stop=on_stop, rtol=rtol, atol=1e-6)
+
+
+def run_stroke(model, u, scene, writer, comm, say):
+    """Step 3 with the film: series, profiles at the output times, leakage and friction
+    per cycle. Returns (displacement at the end, summary part, counters)."""
+    st = scene.stroke
+    t_wall = time.perf_counter()
+    step = StrokeStep(model, u, scene, comm)
+    lay = step.layout
+    say(f"stroke: {st.velocity} v(t), v_max = {st.v_max:g} mm/s, to t = {st.t_end:g} s; "
+        f"{step.n} unknowns ({lay.film_dofs.size} film pressures)", force=True)
+    U = step.start()
+    s0 = step.scalars(0.0, U)
+    say(f"stroke start: film load {s0['load_fluid']:.5g} N, asperity load "
+        f"{s0['load_asperity']:.5g} N, Q_out = {s0['Q_out']:.4g} mm^3/s", force=True)
+    state = {"t": None, "U": None, "work": 0.0, "F": 0.0, "v": 0.0, "rows": [],
+             "transport": {1: 0.0, -1: 0.0}}
+
+    def on_step(ts, k, t, Ut):
+        Udot = None
+        if state["t"] is not None and t > state["t"]:
+            Udot = (Ut - state["U"]) / (t - state["t"])
+        row = step.scalars(t, Ut, Udot)
+        if Udot is not None:
+            dt = t - state["t"]
+            # friction work: the power F v the rod spends dragging the seal's surface
+            state["work"] += 0.5 * dt * (state["F"] * state["v"]
+                                         + row["friction_total"] * row["v"])
+            way = 1 if state["v"] + row["v"] > 0.0 else -1
+            state["transport"][way] += row["V_out"] - state["rows"][-1]["V_out"]
+        state.update(t=t, U=Ut, F=row["friction_total"], v=row["v"])
+        its = ts.getSNESIterations()
+        row = {"t": t, **row, "dt": ts.getTimeStep(), "newton": its}
+        state["rows"].append(row)
+        writer.series(row)
+        say(f"stroke step {k:5d}  t = {t:.5g} s  dt = {ts.getTimeStep():.3g}  "
+            f"v = {row['v']:.4g} mm/s  Newton {its}  min h = {row['h_min'] * 1e3:.4g} um")
+
+    def on_stop(t, Ut):
+        writer.profile(t, step.profile(t, Ut), name="stroke_profiles.csv")
+
+    writer.profile(0.0, step.profile(0.0, U), name="stroke_profiles.csv")
+    U = step.run(U, st.t_end, st.dt, st.rtol, st.output_times, on_step, on_stop)
+    rows = state["rows"]
+    v = np.array([r["v"] for r in rows])
+    F = np.array([r["friction_total"] for r in rows])
+    c = step.problem.counters
+    info = {
+        "velocity": st.velocity, "v_max": st.v_max, "t_end": st.t_end,
+        "unknowns": int(step.n),
+        "leakage_in": float(U[step.vdofs[0]]), "leakage_out": float(U[step.vdofs[1]]),
+        "outstroke_transport": state["transport"][1],
+        "instroke_transport": state["transport"][-1],
+        "peak_friction_outstroke": float(np.abs(F[v > 0]).max()) if (v > 0).any() else 0.0,
+        "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
+        "friction_work": state["work"],
+        "h_min": float(min(r["h_min"] for r in rows)),
+        "steps_accepted": c.steps, "steps_rejected": c.rejected,
+        "newton_iterations": c.newton, "linear_iterations": c.linear,
+        "wall_time_s": time.perf_counter() - t_wall,
+        "units": {"volume": "mm^3", "force": "N", "work": "N mm"},
+    }
+    return step.displacement(U), info, c
