@@ -5,8 +5,8 @@ The paper's law is Coulomb friction with a penalty regularisation: the asperity 
     tau_s = mu_s p_s gamma / gamma_crit     |gamma| <= gamma_crit   (stick, elastic slip)
     tau_s = mu_s p_s sign(gamma)            |gamma| >  gamma_crit   (slide)
 
-with gamma the tangential slip and p_s(h) the asperity pressure of Eq. 44. On rod-side node i
-it gives the axial nodal force (Eq. 47-48, with the lumping of Eq. 45)
+with gamma the tangential slip and p_s(h) the asperity pressure of Eq. 44. Lumped on the
+rod-side nodes like the normal force (Eq. 45), it gives node i the axial force
 
     F_i = tau_s,i A L_i,     L_i = (z_{i+1} - z_{i-1}) / 2   (current axial positions),
 
@@ -166,9 +166,10 @@ class RodFriction(Term):
         kept = np.clip(gamma, -self.gamma_crit, self.gamma_crit)
         p, _ = self.contact.pressure(t, u)
         kept[p <= 0.0] = 0.0
-        moved = gamma - kept
-        self.anchors = self.anchors + moved
-        return float(np.abs(moved).max()) if moved.size else 0.0
+        new = self.s(t) - u[self.contact.uz] - kept
+        moved = np.abs(new - self.anchors).max() if new.size else 0.0
+        self.anchors = new
+        return float(moved)
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
