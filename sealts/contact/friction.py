@@ -160,16 +160,18 @@ class RodFriction(Term):
     def update(self, t, u):
         """Return mapping after an accepted step at (t, u): cap |gamma_i| at gamma_crit
         (keeping its sign; zero where the node is out of contact) by moving the anchors.
-        Returns the largest anchor move (mm)."""
+        Returns the largest slide of a node in contact in this update (mm; the open nodes'
+        anchors follow the rod and are not counted)."""
         u = np.asarray(u, float)
         gamma = self.slip(t, u)
         kept = np.clip(gamma, -self.gamma_crit, self.gamma_crit)
         p, _ = self.contact.pressure(t, u)
-        kept[p <= 0.0] = 0.0
+        touching = p > 0.0
+        kept[~touching] = 0.0
         new = self.s(t) - u[self.contact.uz] - kept
-        moved = np.abs(new - self.anchors).max() if new.size else 0.0
+        moved = np.abs(new - self.anchors)[touching]
         self.anchors = new
-        return float(moved)
+        return float(moved.max()) if moved.size else 0.0
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
