@@ -212,3 +212,42 @@ def test_spring_held_by_friction_stick_slip():
         u_prev = uz[0]
     assert seen == {"stick", "slide+", "slide-"}
     assert fric.total(path[-1], u) == pytest.approx(-2 * Fc, rel=1e-12)
+
+
+def test_mounted_oring_dragged_by_the_rod(tmp_path):
+    """The coarse mounted O-ring (frictionless groove) with rod friction, the rod moved
+    0.3 mm axially in the stabilised quasi-static driver, anchors updated after every
+    accepted step. At the final static state: the axial forces on the seal balance (rod
+    friction = -(net groove wall reaction), GrooveContact's own sum; the solid's internal
+    forces have no axial resultant); every slip is within gamma_crit; the contact patch has
+    gone with the rod (its nodes' axial displacements grew by 0.3 mm, 1 % on average; the
+    nodes that came into contact on the way less). With frictionless groove walls the
+    O-ring rolls with the rod instead of sliding on it: the friction stays far below mu_s
+    times the normal force."""
+    from conftest import scene
+    from sealts.problem.seal_run import model_from_scene, ramp
+
+    s = scene("oring_mount", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)})
+    model = model_from_scene(s)
+    t0 = s.mount.t_hold
+    u0 = model.mount(t_hold=t0, dt0=s.mount.dt)
+    stroke, mu = 0.3, 0.1
+    fric = RodFriction(model.rod, slip=lambda t: stroke * ramp(t - t0), mu_s=mu)
+    fric.reset(t0, u0)
+    t1 = t0 + 2.0
+    u = model._quasi_static([fric], u0, t0, t1, s.mount.dt, t0 + 1.0, None,
+                            lambda ts, step, t, u: fric.update(t, u))
+    assert model.static
+    fric.update(t1, u)
+    walls = model.groove.reactions(t1, u)
+    net = walls["wall_pressure_side"] + walls["wall_atmosphere_side"]
+    coulomb = mu * model.rod.forces(t1, u).sum()
+    F = fric.total(t1, u)
+    assert F + net == pytest.approx(0.0, abs=1e-6 * coulomb)
+    assert 0 < abs(F) < 0.1 * coulomb
+    p, _ = model.rod.pressure(t1, u)
+    gamma = fric.slip(t1, u)
+    assert np.all(np.abs(gamma) <= GC * (1 + 1e-9))
+    uz = model.rod.uz
+    carried = (u[uz] - u0[uz])[p > 0]
+    assert carried.size > 10 and carried.mean() == pytest.approx(stroke, rel=0.01)

@@ -63,6 +63,14 @@ the step's slip increment and vanishes where the step does not straddle a revers
 steps at reversals are short anyway (v = 0 there). The anchors are also outside the TS
 error estimate (as the front is), so step size control does not see them.
 
+Newton: a node whose iterate lies beyond |gamma| = gamma_crit has no friction stiffness
+(phi' = 0), so a predictor that puts the whole contact patch into sliding leaves the seal's
+axial and rolling modes to the solid and the walls alone. Measured on the coarse mounted
+O-ring, rod moved 0.3 mm in the stabilised quasi-static driver (frictionless groove): the
+state is reached (static solve converges, axial forces balance), but 51 of 112 steps were
+rejected, each a full Newton step along the rolling mode that made the solid non-finite
+(line search basic; bt: 17 of 49 with more Newton iterations).
+
 gamma_crit: 1e-4 mm (0.1 um) by default, a scene-free choice: 1 % of the paper's contact
 element size (0.01 mm), where ABAQUS's default would be 0.5 % of it (5e-5 mm); half the
 roughness Rq = 0.215 um. The stick stiffness per area mu_s p_s / gamma_crit (5e3 MPa/mm at
