@@ -59,8 +59,9 @@ the regularised Coulomb law, evaluated at the end of the step only, so it is pat
 independent over the step: a slip that reverses inside one step (a stroke reversal
 between t_n and t_n+1, a node that slides forward and back) is taken as its net increment,
 and the friction dissipated within the step is not resolved. The error is first order in
-the step's slip increment and vanishes where the step does not straddle a reversal; the
-steps at reversals are short anyway (v = 0 there). The anchors are also outside the TS
+the step's slip increment and vanishes where no step straddles a reversal: stop the time
+stepper at the rod's reversals (:meth:`sealts.contact.rod_motion.RodMotion.reversals`,
+whose ``s`` is the slip function this term wants). The anchors are also outside the TS
 error estimate (as the front is), so step size control does not see them.
 
 Newton: a node whose iterate lies beyond |gamma| = gamma_crit has no friction stiffness
