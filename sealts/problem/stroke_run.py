@@ -23,13 +23,18 @@ V_in - V_out is the film's growth. The flows printed per step take U' as the ste
 difference quotient (output only). The transport per stroke direction sums the steps' V_out
 increments by the sign of v.
 
-Not yet in the stroke: solid friction (Eq. 46-48), viscoelasticity, updating the pressure
-penetration front during the stroke.
+* solid friction (``stroke.friction``): :class:`sealts.contact.friction.RodFriction`, mu_s
+  p_s on the asperity contact with an elastic slip gamma_crit, its anchors updated after
+  every accepted step (TS stops at the rod's reversals).
+
+Not yet in the stroke: viscoelasticity, updating the pressure penetration front during the
+stroke, friction on the groove walls.
 """
 import time
 
 import numpy as np
 
+from ..contact.friction import RodFriction
 from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..film.seal_film import LeakageTerm, SealFilmTerm
@@ -70,6 +75,11 @@ class StrokeStep:
         self.leakage = LeakageTerm(self.film, self.vdofs)
         self.n = lay.n + 2
         terms = [self.solid, self.rod, self.groove, self.film, self.leakage]
+        self.friction = None
+        if scene.stroke.friction and a.mu_s > 0.0:
+            self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
+                                        gamma_crit=scene.stroke.gamma_crit)
+            terms.append(self.friction)
         self.load = None
         old = getattr(model, "load", None)
         if old is not None:
@@ -96,13 +106,21 @@ class StrokeStep:
         U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
                     prefix="stroke_film_").solve_steady(U, 0.0)
         self.film.set_row_scale(0.0, U)
+        if self.friction is not None:
+            self.friction.reset(0.0, U)            # no elastic slip in the pressurised state
         statics = [t for t in self.problem.terms if t is not self.leakage]
         start = Problem(n, statics, comm=comm, linesearch="basic",
                         constraints=Constraints(self.vdofs, 0.0),
                         snes_atol=1e-9 * self.model.force_scale, prefix="stroke_start_")
         U = start.solve_steady(U, 0.0)
         self.problem.counters.newton += start.counters.newton
+        self.accepted(0.0, U)
         return U
+
+    def accepted(self, t, U):
+        """After an accepted step: the friction's elastic slip is capped (its anchors)."""
+        if self.friction is not None:
+            self.friction.update(t, U)
 
     def displacement(self, U):
         """The displacement-only vector of the SealModel's layout (for its outputs)."""
@@ -118,8 +136,9 @@ class StrokeStep:
         y, h, _, p = f.film(t, U, Udot)
         p_asp, _ = self.rod.pressure(t, U)
         tau = f.shear_forces(t, U, Udot) / (f.area * f.lengths(y))
-        return {"y": y, "h": h, "p": p, "p_asperity": p_asp, "tau": tau,
-                "tau_solid": np.zeros_like(tau)}
+        tau_s = (self.friction.stress(t, U) if self.friction is not None
+                 else np.zeros_like(tau))
+        return {"y": y, "h": h, "p": p, "p_asperity": p_asp, "tau": tau, "tau_solid": tau_s}
 
     def scalars(self, t, U, Udot=None):
         """Forces on the seal (N): fluid shear (+y), radial film and asperity loads, flows."""
@@ -130,8 +149,9 @@ class StrokeStep:
         touching = h < self.rod.h_mix
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
         shear = float(f.shear_forces(t, U, Udot).sum())
-        return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": 0.0,
-                "friction_total": shear,
+        solid = float(self.friction.total(t, U)) if self.friction is not None else 0.0
+        return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
+                "friction_total": shear + solid,
                 "normal_load": float(f.forces(t, U).sum() + self.rod.forces(t, U).sum()),
                 "load_fluid": float(f.forces(t, U).sum()),
                 "load_asperity": float(self.rod.forces(t, U).sum()),
@@ -164,6 +184,7 @@ def run_stroke(model, u, scene, writer, comm, say):
              "transport": {1: 0.0, -1: 0.0}}
 
     def on_step(ts, k, t, Ut):
+        step.accepted(t, Ut)
         Udot = None
         if state["t"] is not None and t > state["t"]:
             Udot = (Ut - state["U"]) / (t - state["t"])
