@@ -24,7 +24,7 @@ def stroke(tmp_path_factory):
     states = []
     U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol,
                  on_step=lambda ts, k, t, Ut: states.append((t, Ut)))
-    return step, U0, U, states
+    return step, U0, U, states, (s, model, u)
 
 
 def control_volumes(step, U):
@@ -43,7 +43,7 @@ def test_stroke_conserves_the_film_volume(stroke):
     step with the mean M of each step (the nodes move axially by microns; the wedges at the
     film's ends, 0.1-0.5 mm thick, make A h dM visible against the balance). Bound 1e-3 of
     the volume moved; the wedges' breathing makes that volume large against the growth."""
-    step, U0, U, states = stroke
+    step, U0, U, states, _ = stroke
     v_in, v_out = U[step.vdofs]
     growth = 0.0
     for (ta, Ua), (tb, Ub) in zip(states, states[1:]):
@@ -61,7 +61,7 @@ def test_stroke_lifts_the_seal_and_drags_it_along(stroke):
     direction (+y). The axial forces on the seal balance: the groove's side walls take the
     fluid's axial load (pressure-side flank, the film's surface-normal part) plus the
     shear."""
-    step, U0, U, states = stroke
+    step, U0, U, states, _ = stroke
     t = states[-1][0]
     a, b = step.scalars(0.0, U0), step.scalars(t, U)
     assert b["v"] == 100.0 and a["v"] == 0.0
@@ -75,3 +75,22 @@ def test_stroke_lifts_the_seal_and_drags_it_along(stroke):
                + step.film.shear_forces(t, U, (U - states[-2][1]) / (t - states[-2][0])).sum())
     wall_z = walls["wall_pressure_side"] + walls["wall_atmosphere_side"]
     assert wall_z == pytest.approx(-fluid_z, rel=1e-6)
+
+
+def test_viscoelastic_stroke_starts_relaxed(stroke):
+    """With the Prony series of Table 2 the stroke starts from the relaxed state: the start is
+    solved with the long-term material, so displacements and film equal the hyperelastic
+    start's (to 1e-9 mm and 1e-9 MPa), and with every H_i = S_iso(u) and the frozen terms'
+    stress set there, the viscoelastic DAE is in balance at t = 0 (no jump)."""
+    from dataclasses import replace
+    step, U0, _, _, (s, model, u) = stroke
+    ve = replace(s.viscoelastic, prony="table2", t_min=1e-3)
+    vstep = StrokeStep(model, u, replace(s, viscoelastic=ve))
+    assert len(vstep.viscoelastic.classes.active) > 0
+    V0 = vstep.start()
+    lay, vlay = step.layout, vstep.layout
+    assert np.abs(V0[vlay.udofs] - U0[lay.udofs]).max() < 1e-9
+    assert np.abs(V0[vlay.film_dofs] - U0[lay.film_dofs]).max() < 1e-9
+    f = vstep.problem.residual(0.0, V0, np.zeros_like(V0))
+    assert np.abs(f[vlay.prony_dofs]).max() < 1e-9 * model.force_scale
+    assert np.abs(f[vlay.udofs]).max() < 10 * 1e-9 * model.force_scale

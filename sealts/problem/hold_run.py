@@ -56,32 +56,61 @@ def step_ramp(t, t_ramp):
     return s * s * (3.0 - 2.0 * s)
 
 
-class HoldStep:
-    """The DAE of the viscoelastic hold, built on a SealModel after pressurisation."""
+class ViscoelasticSolid:
+    """The seal's Prony material for a step of the scene's time scales: the series and its
+    WLF factor, the classification of its terms over [viscoelastic.t_min, t_end], and the
+    terms built on a Layout from a relaxed start u0 (H_i = S_iso(u0)). Shared by the hold and
+    the stroke."""
 
-    def __init__(self, model, u0, p_from, p_to, t_ramp, ve, t_end, comm=None):
-        self.model, self.p_to = model, p_to
+    def __init__(self, model, ve, t_end):
+        self.model = model
         self.series, self.shift_of_t = prony_series(ve)
         s = self.series
         temps = list(ve.temperature_values) or [ve.temperature]
         shifts = [float(wlf_shift(th, ve.theta_0, ve.wlf_c1, ve.wlf_c2)) for th in temps]
         self.shift = max(shifts)            # for reports: the slowest relaxation
         self.classes = classify(s, ve.t_min, t_end, ve.tol, shift=(min(shifts), max(shifts)))
-        act, rel, frz = self.classes.active, self.classes.relaxed, self.classes.frozen
         mat = model.material
         self.instantaneous = replace(mat, c10=mat.c10 / s.g_inf, c01=mat.c01 / s.g_inf)
-        keep = 1.0 - s.g[rel].sum()
+        self.prony_size = 16 * len(self.classes.active)     # per cell
+
+    def terms(self, layout, u0):
+        """(elastic SolidTerm, PronyTerm, H0 as the layout's prony values per cell) from the
+        displacement u0 of the model's own layout."""
+        s, c, m = self.series, self.classes, self.model
+        keep = 1.0 - s.g[c.relaxed].sum()
         elastic = replace(self.instantaneous, c10=self.instantaneous.c10 * keep,
                           c01=self.instantaneous.c01 * keep)
+        mesh = m.mesh
+        solid = SolidTerm(mesh.X, mesh.conn, elastic, m.axisym, udofs=layout.udofs)
+        prony = PronyTerm(solid, self.instantaneous, s.g[c.active], s.tau[c.active],
+                          layout.prony_dofs, shift=self.shift_of_t)
+        u = np.zeros(layout.n)
+        u[layout.udofs] = u0[m.udofs]
+        return solid, prony, self.relax(prony, u)
+
+    def relax(self, prony, u):
+        """The relaxed state at the displacement in u (the layout's vector): sets the frozen
+        terms' stress g S_iso(u) and returns H_i = S_iso(u) per cell (the prony values)."""
+        H0, S0 = prony.equilibrium(u)
+        prony.frozen = self.series.g[self.classes.frozen].sum() * S0
+        return H0.reshape(H0.shape[0], -1)
+
+
+class HoldStep:
+    """The DAE of the viscoelastic hold, built on a SealModel after pressurisation."""
+
+    def __init__(self, model, u0, p_from, p_to, t_ramp, ve, t_end, comm=None):
+        self.model, self.p_to = model, p_to
+        ves = ViscoelasticSolid(model, ve, t_end)
+        self.series, self.shift_of_t, self.shift = ves.series, ves.shift_of_t, ves.shift
+        self.classes = ves.classes
         mesh = model.mesh
-        self.layout = lay = Layout(mesh, prony=16 * len(act))
+        self.layout = lay = Layout(mesh, prony=ves.prony_size)
         assert np.array_equal(lay.udofs, model.udofs)  # vertices first: u0 maps as it is
         X = mesh.X
-        self.solid = SolidTerm(X, mesh.conn, elastic, model.axisym, udofs=lay.udofs)
-        self.prony = PronyTerm(self.solid, self.instantaneous, s.g[act], s.tau[act],
-                               lay.prony_dofs, shift=self.shift_of_t)
-        H0, S0 = self.prony.equilibrium(u0)
-        self.prony.frozen = s.g[frz].sum() * S0
+        self.solid, self.prony, H0 = ves.terms(lay, u0)
+        self.instantaneous = ves.instantaneous
         # rod and groove at their final positions
         self.rod = copy.copy(model.rod)
         self.rod.r_rod = lambda t: model.r_rod_final
@@ -95,10 +124,10 @@ class HoldStep:
         self.load.set_reach(old.reach)
         self.U0 = np.zeros(lay.n)
         self.U0[lay.udofs] = u0[model.udofs]
-        self.U0[lay.prony_dofs] = H0.reshape(H0.shape[0], -1)
+        self.U0[lay.prony_dofs] = H0
         terms = [self.solid, self.prony, self.rod, self.groove, self.load]
         fields = {"displacement": lay.field_dofs("displacement")}
-        if len(act):
+        if ves.prony_size:
             fields["prony"] = lay.field_dofs("prony")
         self.problem = Problem(lay.n, terms, comm=comm, prefix="hold_", linesearch="basic",
                                snes_atol=1e-9 * model.force_scale, fields=fields)

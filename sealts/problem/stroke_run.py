@@ -27,8 +27,14 @@ increments by the sign of v.
   p_s on the asperity contact with an elastic slip gamma_crit, its anchors updated after
   every accepted step (TS stops at the rod's reversals).
 
-Not yet in the stroke: viscoelasticity, updating the pressure penetration front during the
-stroke, friction on the groove walls.
+* viscoelastic (``viscoelastic.prony``): the Prony terms of the hold
+  (:class:`sealts.problem.hold_run.ViscoelasticSolid`), classified over
+  [viscoelastic.t_min, stroke.t_end], from a relaxed start: the start is solved with the
+  long-term material, then every H_i = S_iso(u) and the frozen terms' stress is set there
+  (paper step 3).
+
+Not yet in the stroke: updating the pressure penetration front during the stroke,
+friction on the groove walls.
 """
 import time
 
@@ -52,10 +58,20 @@ class StrokeStep:
         self.model, self.scene = model, scene
         self.motion = motion_from_scene(scene.stroke)
         mesh, X = model.mesh, model.mesh.X
-        self.layout = lay = Layout(mesh, film=True)
+        ve = scene.viscoelastic
+        self.viscoelastic = None
+        if ve.prony != "none":
+            from .hold_run import ViscoelasticSolid
+            self.viscoelastic = ves = ViscoelasticSolid(model, ve, scene.stroke.t_end)
+        prony_size = self.viscoelastic.prony_size if self.viscoelastic else 0
+        self.layout = lay = Layout(mesh, film=True, prony=prony_size)
         ud = lay.udofs
         axisym = model.axisym
-        self.solid = SolidTerm(X, mesh.conn, model.material, axisym, udofs=ud)
+        self.prony = None
+        if self.viscoelastic:
+            self.solid, self.prony, H0 = ves.terms(lay, u0)
+        else:
+            self.solid = SolidTerm(X, mesh.conn, model.material, axisym, udofs=ud)
         chain = lay.rod_nodes
         a = scene.asperity
         self.rod = RodContact(X, chain, lambda t: model.r_rod_final, model.rod.area,
@@ -75,6 +91,8 @@ class StrokeStep:
         self.leakage = LeakageTerm(self.film, self.vdofs)
         self.n = lay.n + 2
         terms = [self.solid, self.rod, self.groove, self.film, self.leakage]
+        if self.prony is not None:
+            terms.insert(1, self.prony)
         self.friction = None
         if scene.stroke.friction and a.mu_s > 0.0:
             self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
@@ -93,8 +111,14 @@ class StrokeStep:
             terms.append(self.load)
         self.U0 = np.zeros(self.n)
         self.U0[ud] = u0[model.udofs]
+        fields = None
+        if prony_size:
+            self.U0[lay.prony_dofs] = H0
+            prony = lay.field_dofs("prony")
+            fields = {"prony": prony,
+                      "displacement": np.setdiff1d(np.arange(self.n), prony)}
         self.problem = Problem(self.n, terms, comm=comm, prefix="stroke_", linesearch="basic",
-                               snes_atol=1e-9 * model.force_scale)
+                               snes_atol=1e-9 * model.force_scale, fields=fields)
 
     def start(self):
         """Film pressures with the seal held, then seal and film in equilibrium at t = 0."""
@@ -102,18 +126,30 @@ class StrokeStep:
         U = self.U0.copy()
         U[lay.film_dofs] = np.linspace(self.scene.fluid.p_in, self.scene.fluid.p_out,
                                        lay.film_dofs.size)
-        held = np.concatenate([lay.udofs.ravel(), self.vdofs])
+        held = np.concatenate([lay.udofs.ravel(), self.vdofs]
+                              + ([lay.prony_dofs.ravel()] if self.prony is not None else []))
         U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
                     prefix="stroke_film_").solve_steady(U, 0.0)
         self.film.set_row_scale(0.0, U)
         if self.friction is not None:
             self.friction.reset(0.0, U)            # no elastic slip in the pressurised state
+        # the long-term equilibrium with the film (the paper's step 2 ends with the
+        # hydrostatic film); a viscoelastic seal starts relaxed from it
         statics = [t for t in self.problem.terms if t is not self.leakage]
+        fixed = self.vdofs
+        if self.prony is not None:
+            k = statics.index(self.solid)
+            statics[k:k + 2] = [SolidTerm(self.model.mesh.X, self.model.mesh.conn,
+                                          self.model.material, self.model.axisym,
+                                          udofs=lay.udofs)]
+            fixed = np.concatenate([fixed, lay.prony_dofs.ravel()])
         start = Problem(n, statics, comm=comm, linesearch="basic",
-                        constraints=Constraints(self.vdofs, 0.0),
+                        constraints=Constraints(fixed, U[fixed]),
                         snes_atol=1e-9 * self.model.force_scale, prefix="stroke_start_")
         U = start.solve_steady(U, 0.0)
         self.problem.counters.newton += start.counters.newton
+        if self.prony is not None:
+            U[lay.prony_dofs] = self.viscoelastic.relax(self.prony, U)
         self.accepted(0.0, U)
         return U
 
@@ -174,6 +210,9 @@ def run_stroke(model, u, scene, writer, comm, say):
     t_wall = time.perf_counter()
     step = StrokeStep(model, u, scene, comm)
     lay = step.layout
+    if step.viscoelastic:
+        ves = step.viscoelastic
+        say(ves.classes.describe(ves.series, ves.shift), force=True)
     say(f"stroke: {st.velocity} v(t), v_max = {st.v_max:g} mm/s, to t = {st.t_end:g} s; "
         f"{step.n} unknowns ({lay.film_dofs.size} film pressures)", force=True)
     U = step.start()
