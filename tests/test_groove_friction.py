@@ -1,0 +1,190 @@
+"""Coulomb friction on the groove walls (GrooveFriction).
+
+Each check is measured against something computed another way: the Jacobian against central
+differences of the residual; the surfaces' pressures against GrooveContact's own reactions and
+node pressures; the sliding and sticking forces against those pressures times mu and times
+the penalty slope; the anchor update against its definition (slip capped, forces unchanged).
+"""
+import numpy as np
+import pytest
+
+from sealts.contact.groove_friction import GrooveFriction, groove_surfaces
+from sealts.contact.rigid import GrooveContact
+from sealts.mesh.structured import rectangle
+from sealts.problem import Problem
+
+GC = 1e-4
+
+
+def corner_groove(nodes_X, rho):
+    """As tests/test_mount.py: a groove of bottom r = 0.98, walls z = 0.02 and 0.98, corners
+    of radius rho; the block r in [0.5, 1], z in [0, 1] digs 0.02 mm into every wall."""
+    trib = np.full(nodes_X.shape[0], 0.1)
+    return GrooveContact(nodes_X, np.arange(nodes_X.shape[0]), trib, True, lambda t: 0.98,
+                         lambda t: (0.02, 0.98), penalty=1e3, delta=1e-3, corner_radius=rho)
+
+
+def block(rho, seed=5):
+    X, _, _ = rectangle(0.5, 1.0, 0.0, 1.0, 5, 10)
+    groove = corner_groove(X, rho)
+    u = np.random.default_rng(seed).uniform(-0.005, 0.005, 2 * X.shape[0])
+    return X, groove, u
+
+
+def set_slips(fric, t, u, x, y):
+    """Anchors giving slip x * GC on slot 0 (bottom or arc) and y * GC on the side walls; on
+    an arc y offsets the anchor along the normal instead (it then enters only through the
+    tangent's turning, the dt/dx term)."""
+    _, _, tan, _, region = groove_surfaces(fric.groove, t, u)
+    d = fric._disp(u)
+    t0 = tan[0]
+    perp = np.stack([t0[:, 1], -t0[:, 0]], axis=1)      # e_r on the flat bottom (t0 = e_z)
+    fric.anchors = d + GC * (x[:, None] * t0 + y[:, None] * perp)
+    g = fric.slip(t, u)
+    assert np.allclose(g[0], x * GC, rtol=0, atol=1e-15)
+    flat = region == 0
+    assert np.allclose(g[1:, flat], (y * GC)[flat], rtol=0, atol=1e-15)
+    return region
+
+
+@pytest.mark.parametrize("rho", [0.0, 0.2])
+def test_groove_friction_jacobian(rho):
+    """Every entry of the 2x2 nodal blocks against central differences (entries above 1e-3
+    of the largest to 1e-6 relative, the rest to 1e-6 of the largest), with slips in stick,
+    the blend and sliding of both signs, on the flat walls, in the sharp corners (two walls
+    at once) and on the corner arcs; a time-dependent mu."""
+    X, groove, u = block(rho)
+    n = u.size
+    t = 0.7
+    fric = GrooveFriction(groove, mu=lambda t: 0.1 + 0.2 * t)
+    m = X.shape[0]
+    choices = np.array([-3.0, -0.9, -0.7, -0.2, 0.1, 0.4, 0.6, 0.8, 0.95, 2.0, 0.0, 0.3,
+                        -0.45, -0.6, 1.3, 0.75, -1.7])
+    rng = np.random.default_rng(1)
+    x, y = rng.choice(choices, m), rng.choice(choices, m)
+    region = set_slips(fric, t, u, x, y)
+    p = groove_surfaces(groove, t, u)[0]
+    problem = Problem(n, [fric])
+    J = problem.jacobian_dense(t, u, np.zeros(n), 3.0)
+    eps = 1e-8
+    fd = np.zeros((n, n))
+    for j in range(n):
+        e = np.zeros(n)
+        e[j] = eps
+        fd[:, j] = (problem.residual(t, u + e, u) - problem.residual(t, u - e, u)) / (2 * eps)
+    scale = np.abs(J).max()
+    assert np.abs(J - fd).max() <= 1e-6 * scale
+    big = np.abs(J) > 1e-3 * scale
+    rel = np.abs(J[big] - fd[big]) / np.abs(J[big])
+    assert rel.max() < 1e-6, rel.max()
+    # the check saw every kind of node: two walls at once (sharp corners) or arcs, and stick,
+    # blend and slide on pressed walls
+    pressed = p > 1.0
+    if rho == 0.0:
+        assert (pressed.sum(axis=0) == 2).sum() >= 2
+    else:
+        assert ((region > 0) & pressed[0]).sum() >= 2
+    for lo, hi in ((0.0, 0.5), (0.5, 1.0), (1.0, 10.0)):
+        assert (pressed[0] & (np.abs(x) > lo) & (np.abs(x) < hi)).any()
+
+
+def test_surfaces_are_groove_contacts():
+    """The slots' pressures are GrooveContact's: their largest is node_pressures, and with
+    sharp corners sum p w per wall is the wall's reaction."""
+    for rho in (0.0, 0.2):
+        X, groove, u = block(rho, seed=2)
+        p = groove_surfaces(groove, 0.0, u)[0]
+        assert np.allclose(p.max(axis=0), groove.node_pressures(0.0, u), rtol=1e-14, atol=0)
+    X, groove, u = block(0.0, seed=2)
+    p = groove_surfaces(groove, 0.0, u)[0]
+    R = groove.reactions(0.0, u)
+    w = groove.w
+    assert -R["bottom"] == pytest.approx(p[0] @ w, rel=1e-13)
+    assert R["wall_pressure_side"] == pytest.approx(p[1] @ w, rel=1e-13)
+    assert -R["wall_atmosphere_side"] == pytest.approx(p[2] @ w, rel=1e-13)
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_coulomb_limit_in_sliding(sign):
+    """Slips of 100 gamma_crit: every slot's force is mu times the wall's normal force on the
+    node (p w), along the tangent, on each wall; the wall totals are mu times GrooveContact's
+    reactions (sharp corners), the bottom's axial, the side walls' radial."""
+    mu = 0.1
+    X, groove, u = block(0.0, seed=3)
+    fric = GrooveFriction(groove, mu=mu)
+    m = X.shape[0]
+    set_slips(fric, 0.0, u, np.full(m, 100.0 * sign), np.full(m, 100.0 * sign))
+    p = groove_surfaces(groove, 0.0, u)[0]
+    F = fric.slot_forces(0.0, u)
+    assert np.allclose(F[0, :, 1], sign * mu * p[0] * groove.w, rtol=1e-14, atol=0)
+    assert np.all(F[0, :, 0] == 0) and np.all(F[1:, :, 1] == 0)
+    assert np.allclose(F[1:, :, 0], sign * mu * p[1:] * groove.w, rtol=1e-14, atol=0)
+    R = groove.reactions(0.0, u)
+    tot = fric.total(0.0, u)
+    assert tot["bottom"][1] == pytest.approx(-sign * mu * R["bottom"], rel=1e-12)
+    assert tot["wall_pressure_side"][0] == pytest.approx(sign * mu * R["wall_pressure_side"],
+                                                         rel=1e-12)
+    assert tot["wall_atmosphere_side"][0] == pytest.approx(
+        -sign * mu * R["wall_atmosphere_side"], rel=1e-12)
+    assert R["bottom"] < 0 and R["wall_pressure_side"] > 0
+    # on the arcs too: mu p w along the arc's tangent
+    X, groove, u = block(0.2, seed=3)
+    fric = GrooveFriction(groove, mu=mu)
+    region = set_slips(fric, 0.0, u, np.full(m, 100.0 * sign), np.zeros(m))
+    p, _, tan, _, _ = groove_surfaces(groove, 0.0, u)
+    F = fric.slot_forces(0.0, u)
+    arc = (region > 0) & (p[0] > 1.0)
+    assert arc.sum() >= 2
+    assert np.allclose(F[0][arc], sign * mu * (p[0] * groove.w)[arc, None] * tan[0][arc],
+                       rtol=1e-14, atol=0)
+
+
+def test_stick_is_the_penalty_law():
+    """From zero elastic slip (reset), moving every node by delta << gamma_crit along the
+    bottom (z) gives the bottom nodes -mu p w delta / gamma_crit (opposing the motion),
+    proportional to delta; along r the side walls' nodes the same radially."""
+    mu = 0.1
+    X, groove, u = block(0.0, seed=4)
+    fric = GrooveFriction(groove, mu=mu)
+    fric.reset(0.0, u)
+    assert np.abs(fric.forces(0.0, u)).max() == 0.0
+    for axis, slots in ((1, [0]), (0, [1, 2])):
+        dofs = groove.uz if axis == 1 else groove.ur
+        for delta in (1e-3 * GC, 2e-3 * GC, -5e-3 * GC):
+            v = u.copy()
+            v[dofs] += delta
+            p = groove_surfaces(groove, 0.0, v)[0]
+            F = fric.slot_forces(0.0, v)
+            for k in slots:
+                assert np.allclose(F[k, :, axis], -mu * p[k] * groove.w * delta / GC,
+                                   rtol=1e-9, atol=0)
+        assert (p[slots] > 1.0).sum() >= 4
+
+
+@pytest.mark.parametrize("rho", [0.0, 0.2])
+def test_update_caps_slip_and_keeps_forces(rho):
+    """update(): afterwards every touched slot's |gamma| <= gamma_crit, nodes off the walls
+    have zero slip, and the residual at that state is unchanged (and with flat walls the
+    Jacobian too); a second update moves nothing."""
+    X, groove, u = block(rho, seed=6)
+    n, m = u.size, X.shape[0]
+    fric = GrooveFriction(groove, mu=0.1)
+    rng = np.random.default_rng(7)
+    set_slips(fric, 0.0, u, rng.uniform(-5, 5, m), rng.uniform(-5, 5, m))
+    problem = Problem(n, [fric])
+    z = np.zeros(n)
+    f0, J0 = problem.residual(0.0, u, z), problem.jacobian_dense(0.0, u, z, 0.0)
+    moved = fric.update(0.0, u)
+    g = fric.slip(0.0, u)
+    p = groove_surfaces(groove, 0.0, u)[0]
+    touched = p > fric.p_open
+    assert moved > GC
+    assert np.all(np.abs(g[touched]) <= GC * (1 + 1e-9))
+    free = ~touched.any(axis=0)
+    assert np.all(np.abs(g[:, free]) <= 1e-15)
+    assert free.sum() > 10 and touched.sum() > 10
+    assert np.allclose(problem.residual(0.0, u, z), f0, rtol=0, atol=1e-12 * np.abs(f0).max())
+    if rho == 0.0:
+        assert np.allclose(problem.jacobian_dense(0.0, u, z, 0.0), J0, rtol=0,
+                           atol=1e-12 * np.abs(J0).max())
+    assert fric.update(0.0, u) <= 1e-15
