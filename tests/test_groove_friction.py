@@ -188,3 +188,64 @@ def test_update_caps_slip_and_keeps_forces(rho):
         assert np.allclose(problem.jacobian_dense(0.0, u, z, 0.0), J0, rtol=0,
                            atol=1e-12 * np.abs(J0).max())
     assert fric.update(0.0, u) <= 1e-15
+
+
+@pytest.fixture(scope="module")
+def stroke_with_friction(tmp_path_factory):
+    """The coarse O-ring at 1 MPa (as the fixture of tests/test_stroke.py) with friction on
+    the rod and the groove walls: the rod ramps to 100 mm/s outstroke in 10 ms and holds to
+    30 ms (2.5 mm of travel)."""
+    from conftest import scene
+    from sealts.problem.seal_run import model_from_scene
+    from sealts.problem.stroke_run import StrokeStep
+
+    cache = str(tmp_path_factory.mktemp("mesh"))
+    s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": cache},
+              stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
+                      "t_end": 0.03, "output_times": [], "friction": True})
+    assert s.groove.mu == 0.1 and s.asperity.mu_s == 0.1
+    model = model_from_scene(s)
+    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
+    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
+                         dt0=s.mount.dt)
+    step = StrokeStep(model, u, s)
+    assert step.friction is not None and step.groove_friction is not None
+    U0 = step.start()
+    states = []
+
+    def on_step(ts, k, t, Ut):
+        step.accepted(t, Ut)
+        states.append((t, Ut.copy()))
+
+    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, on_step=on_step)
+    return s, step, U0, U, states
+
+
+def test_stroke_slides_the_seal_on_the_rod(stroke_with_friction):
+    """With the groove walls holding the O-ring, the rod slides under it: at the end of the
+    stroke (100 mm/s, 2.5 mm travelled) the solid friction is the Coulomb limit mu_s times
+    the asperity load (1 %), in the rod's direction, and the groove bottom's friction resists
+    the rolling (it drags the seal's outer surface along with the rod). The axial forces on the seal balance:
+    rod friction + fluid shear + the fluid's axial loads (free surfaces, the film's surface-
+    normal part) + the groove walls' normal reactions and friction = 0."""
+    s, step, U0, U, states = stroke_with_friction
+    t = states[-1][0]
+    assert t == pytest.approx(0.03)
+    row = step.scalars(t, U)
+    assert row["v"] == 100.0
+    coulomb = s.asperity.mu_s * row["load_asperity"]
+    assert coulomb > 10.0
+    assert row["friction_solid"] == pytest.approx(coulomb, rel=0.01)
+    # the groove bottom's friction holds the O-ring from rolling: the rod's drag would turn
+    # its outer surface against the rod's motion, so the bottom pushes it along (+z), and
+    # the atmosphere-side wall takes the rest
+    assert 0.0 < row["friction_groove"] < row["friction_solid"]
+    Udot = (U - states[-2][1]) / (t - states[-2][0])
+    walls = step.groove.reactions(t, U)
+    fz = step.load.forces(t, U)
+    fluid_z = (fz[:, 1].sum() + fz[:, 3].sum() + step.film.axial_forces(t, U).sum()
+               + step.film.shear_forces(t, U, Udot).sum())
+    wall_z = walls["wall_pressure_side"] + walls["wall_atmosphere_side"]
+    total = fluid_z + wall_z + row["friction_solid"] + row["friction_groove"]
+    assert total == pytest.approx(0.0, abs=1e-6 * abs(wall_z))
+    assert row["friction_groove"] == pytest.approx(step.groove_friction.total(t, U)["total"][1])

@@ -24,8 +24,12 @@ difference quotient (output only). The transport per stroke direction sums the s
 increments by the sign of v.
 
 * solid friction (``stroke.friction``): :class:`sealts.contact.friction.RodFriction`, mu_s
-  p_s on the asperity contact with an elastic slip gamma_crit, its anchors updated after
-  every accepted step (TS stops at the rod's reversals).
+  p_s on the asperity contact with an elastic slip gamma_crit, and
+  :class:`sealts.contact.groove_friction.GrooveFriction`, ``groove.mu`` times the wall
+  pressure on the groove's bottom and side walls with the same gamma_crit (without it the
+  rod's friction rolls the O-ring in its frictionless groove); their anchors are updated
+  after every accepted step (TS stops at the rod's reversals). ``friction_groove`` in the
+  series is the walls' axial friction force on the seal.
 
 * viscoelastic (``viscoelastic.prony``): the Prony terms of the hold
   (:class:`sealts.problem.hold_run.ViscoelasticSolid`), classified over
@@ -33,14 +37,14 @@ increments by the sign of v.
   long-term material, then every H_i = S_iso(u) and the frozen terms' stress is set there
   (paper step 3).
 
-Not yet in the stroke: updating the pressure penetration front during the stroke,
-friction on the groove walls.
+Not yet in the stroke: updating the pressure penetration front during the stroke.
 """
 import time
 
 import numpy as np
 
 from ..contact.friction import RodFriction
+from ..contact.groove_friction import GrooveFriction
 from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..film.seal_film import LeakageTerm, SealFilmTerm
@@ -93,11 +97,15 @@ class StrokeStep:
         terms = [self.solid, self.rod, self.groove, self.film, self.leakage]
         if self.prony is not None:
             terms.insert(1, self.prony)
-        self.friction = None
+        self.friction = self.groove_friction = None
         if scene.stroke.friction and a.mu_s > 0.0:
             self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
                                         gamma_crit=scene.stroke.gamma_crit)
             terms.append(self.friction)
+        if scene.stroke.friction and scene.groove.mu > 0.0:
+            self.groove_friction = GrooveFriction(self.groove, mu=scene.groove.mu,
+                                                  gamma_crit=scene.stroke.gamma_crit)
+            terms.append(self.groove_friction)
         self.load = None
         old = getattr(model, "load", None)
         if old is not None:
@@ -131,8 +139,8 @@ class StrokeStep:
         U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
                     prefix="stroke_film_").solve_steady(U, 0.0)
         self.film.set_row_scale(0.0, U)
-        if self.friction is not None:
-            self.friction.reset(0.0, U)            # no elastic slip in the pressurised state
+        for fr in self.frictions:
+            fr.reset(0.0, U)                       # no elastic slip in the pressurised state
         # the long-term equilibrium with the film (the paper's step 2 ends with the
         # hydrostatic film); a viscoelastic seal starts relaxed from it
         statics = [t for t in self.problem.terms if t is not self.leakage]
@@ -153,10 +161,15 @@ class StrokeStep:
         self.accepted(0.0, U)
         return U
 
+    @property
+    def frictions(self):
+        """The friction terms in use (rod, groove walls)."""
+        return [f for f in (self.friction, self.groove_friction) if f is not None]
+
     def accepted(self, t, U):
-        """After an accepted step: the friction's elastic slip is capped (its anchors)."""
-        if self.friction is not None:
-            self.friction.update(t, U)
+        """After an accepted step: the frictions' elastic slips are capped (their anchors)."""
+        for fr in self.frictions:
+            fr.update(t, U)
 
     def displacement(self, U):
         """The displacement-only vector of the SealModel's layout (for its outputs)."""
@@ -186,8 +199,10 @@ class StrokeStep:
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
         shear = float(f.shear_forces(t, U, Udot).sum())
         solid = float(self.friction.total(t, U)) if self.friction is not None else 0.0
+        gf = self.groove_friction
+        groove = gf.axial(t, U) if gf is not None else 0.0
         return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
-                "friction_total": shear + solid,
+                "friction_total": shear + solid, "friction_groove": groove,
                 "normal_load": float(f.forces(t, U).sum() + self.rod.forces(t, U).sum()),
                 "load_fluid": float(f.forces(t, U).sum()),
                 "load_asperity": float(self.rod.forces(t, U).sum()),

@@ -104,6 +104,8 @@ class Groove:
     width: float = option(5.6, unit="mm", gt=0.0, doc="groove width b between side walls")
     corner_radius: float = option(0.0, unit="mm", ge=0.0,
                                   doc="radius of the two bottom corners (0: sharp)")
+    mu: float = option(0.1, ge=0.0, doc="friction coefficient of the groove walls (stroke "
+                                        "with friction; elastic slip stroke.gamma_crit)")
 
 
 @dataclass(frozen=True)
@@ -185,9 +187,8 @@ class Stroke:
     rtol: float = option(1e-3, gt=0.0, doc="TS relative error tolerance of the stroke")
     output_times: list[float] = option([], unit="s", gt=0.0,
                                        doc="times of profile output; t_end is always written")
-    friction: bool = option(False, doc="solid friction mu_s p_s on the rod (Eq. 46-48); "
-                                       "off by default: with a frictionless groove the "
-                                       "O-ring rolls and the stroke stalls (README)")
+    friction: bool = option(False, doc="solid friction: mu_s p_s on the rod (Eq. 46-48) "
+                                       "and groove.mu on the groove walls")
     gamma_crit: float = option(1e-4, unit="mm", gt=0.0,
                                doc="elastic slip at which solid friction reaches mu_s p_s")
 
