@@ -249,3 +249,71 @@ def test_stroke_slides_the_seal_on_the_rod(stroke_with_friction):
     total = fluid_z + wall_z + row["friction_solid"] + row["friction_groove"]
     assert total == pytest.approx(0.0, abs=1e-6 * abs(wall_z))
     assert row["friction_groove"] == pytest.approx(step.groove_friction.total(t, U)["total"][1])
+
+
+def test_node_dragged_along_the_bottom_and_round_the_corner():
+    """One node held 0.01 mm into the groove (moved by hand, anchors updated after each
+    move). Along the flat bottom: 20 gamma_crit in steps of 0.3 gamma_crit gives the Coulomb
+    force -mu p w e_z, kept when it stops (however often updated); back by 0.6 gamma_crit
+    unloads to 0.4 of it, back by 3 gamma_crit reaches +mu p w. Round a corner arc (rho =
+    0.2) in steps of 0.5 gamma_crit of arc length: the force is mu p w against the motion,
+    along the arc's tangent, all the way from the bottom to the side wall, where it is the
+    wall's radial friction."""
+    mu, pen = 0.1, 0.01
+    one = np.array([[0.98 + pen, 0.5]])
+    groove = corner_groove(one, 0.0)
+    fric = GrooveFriction(groove, mu=mu)
+    u = np.zeros(2)
+    fric.reset(0.0, u)
+    p = groove_surfaces(groove, 0.0, u)[0][0, 0]
+    coulomb = mu * p * groove.w[0]
+    assert p == pytest.approx(1e3 * pen, rel=1e-3)
+    for s in np.arange(1, 68) * 0.3 * GC:
+        u[1] = s
+        fric.update(0.0, u)
+    for _ in range(3):
+        assert fric.forces(0.0, u)[0] == pytest.approx([0.0, -coulomb], rel=1e-12, abs=0)
+        fric.update(0.0, u)
+    u[1] = s - 0.6 * GC
+    assert fric.forces(0.0, u)[0, 1] == pytest.approx(-0.4 * coulomb, rel=1e-9)
+    for ds in np.arange(1, 11) * 0.3 * GC:
+        u[1] = s - ds
+        fric.update(0.0, u)
+    assert fric.forces(0.0, u)[0, 1] == pytest.approx(coulomb, rel=1e-12)
+
+    # round corner a: centre (0.78, 0.22), the node at distance rho + pen from it, from the
+    # bottom (theta = 0, direction +r) to the side wall (theta = -90 degrees, direction -z)
+    rho = 0.2
+    start = np.array([[0.98 + pen, 0.22]])
+    groove = corner_groove(start, rho)
+    fric = GrooveFriction(groove, mu=mu)
+    R = rho + pen
+    c = np.array([0.78, 0.22])
+
+    def at(theta):
+        x = c + R * np.array([np.cos(theta), np.sin(theta)])
+        return x - start[0]
+
+    u = at(0.0)
+    fric.reset(0.0, u)
+    dtheta = 0.5 * GC / R
+    thetas = -np.arange(1, int(0.5 * np.pi / dtheta) + 30) * dtheta
+    checked = 0
+    for i, th in enumerate(thetas):
+        u = at(th)
+        if i >= 10 and i % 500 == 0 or i == thetas.size - 1:
+            F = fric.forces(0.0, u)[0]
+            p = groove_surfaces(groove, 0.0, u)[0].max()
+            # the motion's direction: d(x)/d(-theta), on the arc (-sin, cos) * -1
+            move = np.array([np.sin(th), -np.cos(th)])
+            if th < -0.5 * np.pi:                     # past the arc: on the flat wall
+                move = np.array([-1.0, 0.0])
+            assert p == pytest.approx(1e3 * pen, rel=1e-3)
+            assert F == pytest.approx(-mu * p * groove.w[0] * move, rel=1e-9, abs=1e-12)
+            checked += 1
+        fric.update(0.0, u)
+    assert checked > 5
+    # the last positions are on the flat side wall a (below z = z_a + rho), sliding in -r
+    x = start[0] + u
+    assert x[1] < 0.02 and x[0] < 0.78
+    assert fric.total(0.0, u)["wall_pressure_side"][0] > 0
