@@ -225,9 +225,9 @@ def test_stroke_slides_the_seal_on_the_rod(stroke_with_friction):
     """With the groove walls holding the O-ring, the rod slides under it: at the end of the
     stroke (100 mm/s, 2.5 mm travelled) the solid friction is the Coulomb limit mu_s times
     the asperity load (1 %), in the rod's direction, and the groove bottom's friction resists
-    the rolling (it drags the seal's outer surface along with the rod). The axial forces on the seal balance:
-    rod friction + fluid shear + the fluid's axial loads (free surfaces, the film's surface-
-    normal part) + the groove walls' normal reactions and friction = 0."""
+    the rolling (it drags the seal's outer surface along with the rod). The axial forces on
+    the seal balance: rod friction + fluid shear + the fluid's axial loads (free surfaces,
+    the film's surface-normal part) + the groove walls' normal reactions and friction = 0."""
     s, step, U0, U, states = stroke_with_friction
     t = states[-1][0]
     assert t == pytest.approx(0.03)
