@@ -10,11 +10,11 @@ from sealts.problem.stroke_run import StrokeStep
 @pytest.fixture(scope="module")
 def stroke(tmp_path_factory):
     """The coarse O-ring at 1 MPa; the rod ramps to 100 mm/s outstroke in 10 ms and holds
-    to 30 ms."""
+    to 30 ms; no solid friction (tests/test_groove_friction.py runs it with friction)."""
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": cache},
               stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
-                      "t_end": 0.03, "output_times": []})
+                      "t_end": 0.03, "output_times": [], "friction": False})
     model = model_from_scene(s)
     u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
     u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,

@@ -187,8 +187,8 @@ class Stroke:
     rtol: float = option(1e-3, gt=0.0, doc="TS relative error tolerance of the stroke")
     output_times: list[float] = option([], unit="s", gt=0.0,
                                        doc="times of profile output; t_end is always written")
-    friction: bool = option(False, doc="solid friction: mu_s p_s on the rod (Eq. 46-48) "
-                                       "and groove.mu on the groove walls")
+    friction: bool = option(True, doc="solid friction: mu_s p_s on the rod (Eq. 46-48) "
+                                      "and groove.mu on the groove walls")
     gamma_crit: float = option(1e-4, unit="mm", gt=0.0,
                                doc="elastic slip at which solid friction reaches mu_s p_s")
 
