@@ -7,8 +7,8 @@ The discrete system is one DAE
 
 and a steady scene solves F(t, U, 0) = 0 with SNES. Each physics term supplies
 
-* ``rows, cols``: its Jacobian's COO pattern in global unknown numbers, fixed for the run;
-* ``add_residual(t, u, udot, f)``: adds its part of F to the full-length array f;
+* ``rows, cols``: its Jacobian's COO pattern in local dof numbers, fixed for the run;
+* ``add_residual(t, u, udot, f)``: adds its part of F to the local array f;
 * ``jacobian_values(t, u, udot, shift)``: the values for its pattern (duplicates add up).
 
 The Problem concatenates the patterns once (``setPreallocationCOO``) and, per Newton step,
@@ -18,10 +18,25 @@ replace whole rows after the terms are summed, u_i - g_i(t) = 0, so terms need n
 about them. ``setFromOptions()`` is called last, so the command line wins over the
 defaults set here and over a scene's ``[petsc]`` table.
 
-Parallel runs: PETSc distributes rows of U, F and J by contiguous blocks. Every rank gathers
-the full U (the film-only problems are one-dimensional and small), evaluates all terms, and
-keeps the rows it owns; each rank passes only its own COO entries. The distributed linear
-solve is PETSc's (the default parallel preconditioner is ``redundant`` LU).
+Terms work on a rank's *local* arrays: ``add_residual`` gets the local u, udot and f, and
+``rows, cols`` are local dof numbers. Two modes:
+
+* distributed (``dofs``, a :class:`sealts.mesh.partition.Numbering`, as for the seal):
+  each rank's terms cover its own cells (and, on rank 0, the boundary terms). U is
+  scattered to the rank's local dofs (owned and ghost, an IS of ``ltog``); the local
+  residual goes back by the reverse scatter with ADD_VALUES, so shared rows sum over the
+  ranks; COO rows and columns are mapped by ``ltog`` and PETSc's MPIAIJ COO assembly sums
+  the entries of rows other ranks own. Rank r owns a contiguous range of global dofs, the
+  Numbering's;
+* replicated (no ``dofs``: the film-only problems, 1D and small): local = serial = global
+  dofs, PETSc's contiguous blocks of rows; every rank evaluates all terms and keeps only
+  the rows (residual and COO entries) it owns.
+
+Full vectors handed to and from a Problem (``u0``, what ``transient``, ``solve_steady``,
+``on_step`` and ``gather`` give) are in serial order on every rank (a ``toAll`` scatter,
+reordered by the Numbering's ``natural``). A constrained row is written by its owner only;
+every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
+(the default parallel preconditioner is ``redundant`` LU).
 """
 from dataclasses import dataclass
 
@@ -72,7 +87,7 @@ class Problem:
     """A DAE assembled from terms, solved with PETSc TS (transient) or SNES (steady)."""
 
     def __init__(self, n, terms, comm=None, prefix=None, constraints=None, linesearch="bt",
-                 snes_atol=None, fields=None):
+                 snes_atol=None, fields=None, dofs=None):
         """``linesearch`` is the default SNES line search (the command line overrides it):
         ``bt`` for the film; ``basic`` for near-incompressible solids, where the residual
         norm is a poor merit function. Measured on a bent block with K/G ~ 940: basic 6
@@ -83,9 +98,13 @@ class Problem:
         huge, which happened in quasi-static mounting (rod force 1e4 N accepted for 450 N).
         Without it the defaults are rtol 1e-10, atol 1e-12.
 
-        ``fields`` (name -> global dofs), with a ``prony`` field of internal variables: the
+        ``fields`` (name -> serial dofs), with a ``prony`` field of internal variables: the
         default linear solver becomes the exact Schur complement over the displacements
-        (``_default_linear_solver``); any ``-pc_type fieldsplit`` gets these splits."""
+        (``_default_linear_solver``); any ``-pc_type fieldsplit`` gets these splits.
+
+        ``dofs``: the distributed numbering (:class:`sealts.mesh.partition.Numbering`) in
+        which the terms are written (their dofs are this rank's local dofs). Without it the
+        problem is replicated: local = serial = global dofs on every rank."""
         self.linesearch = linesearch
         self.max_it = 50  # of a steady SNES solve
         self.snes_tol = (dict(rtol=1e-10, atol=1e-12) if snes_atol is None
@@ -98,40 +117,82 @@ class Problem:
         self.fields = dict(fields or {})
         self.counters = Counters()
 
-        self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
-        self.rstart, self.rend = self.U.getOwnershipRange()
+        if dofs is None:      # replicated: every rank has every dof, adds its own rows
+            self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
+            self.rstart, self.rend = self.U.getOwnershipRange()
+            ltog = np.arange(self.n, dtype=np.int64)
+            self._own = (ltog >= self.rstart) & (ltog < self.rend)
+            self._keep = self._own
+            self.natural = None
+            self._serial_owned = np.arange(self.rstart, self.rend)
+            self._replicated = True
+        else:                 # distributed: each local contribution is this rank's alone
+            if dofs.n != self.n:
+                raise ValueError(f"numbering of {dofs.n} unknowns for a problem of {self.n}")
+            self.U = PETSc.Vec().createMPI((dofs.n_owned, self.n), comm=self.comm)
+            self.rstart, self.rend = self.U.getOwnershipRange()
+            if self.rstart != dofs.rstart:
+                raise RuntimeError("PETSc's ownership range is not the numbering's")
+            ltog = np.asarray(dofs.ltog, np.int64)
+            self._own = np.asarray(dofs.owned, bool)
+            self._keep = np.ones(ltog.size, bool)
+            self.natural = None if dofs.identity else np.asarray(dofs.natural, np.int64)
+            self._serial_owned = np.asarray(dofs.serial[:dofs.n_owned], np.int64)
+            self._replicated = False
+        self.ltog = ltog
+        self.n_local = ltog.size
+        # global U -> this rank's local dofs (and back, adding, for residuals)
+        self._lvec = PETSc.Vec().createSeq(self.n_local, comm=PETSc.COMM_SELF)
+        self._ldvec, self._fvec = self._lvec.duplicate(), self._lvec.duplicate()
+        iset = PETSc.IS().createGeneral(ltog.astype(PETSc.IntType), comm=PETSc.COMM_SELF)
+        self._l2g = PETSc.Scatter().create(self.U, iset, self._lvec, None)
         self._scatter, self._useq = PETSc.Scatter.toAll(self.U)
         self._udseq = self._useq.duplicate()
 
-        rows = np.concatenate([np.asarray(t.rows, PETSc.IntType) for t in self.terms])
-        cols = np.concatenate([np.asarray(t.cols, PETSc.IntType) for t in self.terms])
+        rows = np.concatenate([np.asarray(t.rows, np.int64) for t in self.terms])
+        cols = np.concatenate([np.asarray(t.cols, np.int64) for t in self.terms])
         if constraints is not None:
+            # a constrained row is u_i - g_i(t) = 0: every rank drops its terms' entries in
+            # it, the owner adds the identity
             self._fixed_entries = np.isin(rows, constraints.dofs)
-            fixed = constraints.dofs.astype(PETSc.IntType)
+            self._fixed_own = self._own[constraints.dofs]
+            fixed = constraints.dofs[self._fixed_own]
             rows = np.concatenate([rows, fixed])
             cols = np.concatenate([cols, fixed])
         self._rows, self._cols = rows, cols
-        self._mine = (rows >= self.rstart) & (rows < self.rend)
+        self._mine = self._keep[rows]
         self.J = PETSc.Mat().create(comm=self.comm)
-        self.J.setSizes(((self.rend - self.rstart, self.n), (self.rend - self.rstart, self.n)))
+        m = self.rend - self.rstart
+        self.J.setSizes(((m, self.n), (m, self.n)))
         self.J.setType(PETSc.Mat.Type.AIJ)
-        self.J.setPreallocationCOO(rows[self._mine], cols[self._mine])
+        self.J.setPreallocationCOO(ltog[rows[self._mine]].astype(PETSc.IntType),
+                                   ltog[cols[self._mine]].astype(PETSc.IntType))
 
-    # ---- evaluation on full-length numpy arrays --------------------------------------------
+    # ---- evaluation on this rank's local numpy arrays --------------------------------------
     def gather(self, V, seq=None):
-        """Full copy of a distributed vector on every rank (a numpy view, do not keep)."""
+        """Full copy of a distributed vector on every rank, in serial order (do not keep:
+        without a distributed numbering it is a view of a work vector)."""
         seq = self._useq if seq is None else seq
         self._scatter.scatter(V, seq, addv=PETSc.InsertMode.INSERT_VALUES,
                               mode=PETSc.ScatterMode.FORWARD)
+        a = seq.getArray(readonly=True)
+        return a if self.natural is None else a[self.natural]
+
+    def local(self, V, seq=None):
+        """This rank's local dofs of a distributed vector (a view of a work vector)."""
+        seq = self._lvec if seq is None else seq
+        self._l2g.scatter(V, seq, addv=PETSc.InsertMode.INSERT_VALUES,
+                          mode=PETSc.ScatterMode.FORWARD)
         return seq.getArray(readonly=True)
 
     def residual(self, t, u, udot):
-        f = np.zeros(self.n)
+        """This rank's part of F on its local dofs (u, udot local)."""
+        f = np.zeros(self.n_local)
         for term in self.terms:
             term.add_residual(t, u, udot, f)
         c = self.constraints
         if c is not None:
-            f[c.dofs] = u[c.dofs] - c.values(t)
+            f[c.dofs] = np.where(self._fixed_own, u[c.dofs] - c.values(t), 0.0)
         return f
 
     def jacobian_values(self, t, u, udot, shift):
@@ -139,46 +200,62 @@ class Problem:
                                for term in self.terms])
         if self.constraints is not None:
             vals[self._fixed_entries] = 0.0
-            vals = np.concatenate([vals, np.ones(self.constraints.dofs.size)])
+            vals = np.concatenate([vals, np.ones(int(self._fixed_own.sum()))])
         return vals
 
     def jacobian_dense(self, t, u, udot, shift):
         """Assembled Jacobian as a dense array (serial tests and diagnostics only)."""
-        a = np.zeros((self.n, self.n))
+        a = np.zeros((self.n_local, self.n_local))
         np.add.at(a, (self._rows, self._cols), self.jacobian_values(t, u, udot, shift))
         return a
 
+    def global_residual(self, t, u, udot=None):
+        """F(t, u, udot) of the whole problem, u and udot full and in serial order; the
+        result too (on every rank)."""
+        X = self._owned(u)
+        Xd = self._owned(np.zeros(self.n) if udot is None else udot)
+        F = X.duplicate()
+        self._assemble_residual(t, X, Xd, F)
+        return self.gather(F).copy()
+
     # ---- PETSc callbacks -------------------------------------------------------------------
-    def _set_owned(self, F, f):
-        F.setArray(f[self.rstart:self.rend])
+    def _add_local(self, F, f):
+        """F = sum over ranks of their local f. Replicated: each rank sets its own rows."""
+        if self._replicated:
+            F.setArray(f[self.rstart:self.rend])
+            return
+        F.zeroEntries()
+        self._fvec.setArray(f)
+        self._l2g.scatter(self._fvec, F, addv=PETSc.InsertMode.ADD_VALUES,
+                          mode=PETSc.ScatterMode.REVERSE)
 
-    def ifunction(self, ts, t, U, Udot, F):
-        u = self.gather(U).copy()
-        ud = self.gather(Udot, self._udseq)
-        self._set_owned(F, self.residual(t, u, ud))
-        self.counters.residuals += 1
+    def _assemble_residual(self, t, U, Udot, F):
+        u = self.local(U).copy()
+        ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
+        self._add_local(F, self.residual(t, u, ud))
 
-    def ijacobian(self, ts, t, U, Udot, shift, J, P):
-        u = self.gather(U).copy()
-        ud = self.gather(Udot, self._udseq)
+    def _assemble_jacobian(self, t, U, Udot, shift, J, P):
+        u = self.local(U).copy()
+        ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
         vals = self.jacobian_values(t, u, ud, shift)[self._mine]
         P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
         if J != P:
             J.assemble()
         self.counters.jacobians += 1
 
+    def ifunction(self, ts, t, U, Udot, F):
+        self._assemble_residual(t, U, Udot, F)
+        self.counters.residuals += 1
+
+    def ijacobian(self, ts, t, U, Udot, shift, J, P):
+        self._assemble_jacobian(t, U, Udot, shift, J, P)
+
     def snes_function(self, snes, U, F):
-        u = self.gather(U)
-        self._set_owned(F, self.residual(self.t_steady, u, np.zeros(self.n)))
+        self._assemble_residual(self.t_steady, U, None, F)
         self.counters.residuals += 1
 
     def snes_jacobian(self, snes, U, J, P):
-        u = self.gather(U)
-        vals = self.jacobian_values(self.t_steady, u, np.zeros(self.n), 0.0)[self._mine]
-        P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
-        if J != P:
-            J.assemble()
-        self.counters.jacobians += 1
+        self._assemble_jacobian(self.t_steady, U, None, 0.0, J, P)
 
     # ---- solver set-up ---------------------------------------------------------------------
     def _default_linear_solver(self, ksp):
@@ -223,8 +300,10 @@ class Problem:
         order = sorted(self.fields, key=lambda k: k != "prony")
         splits = []
         for name in order:
-            d = np.asarray(self.fields[name], PETSc.IntType)
-            d = d[(d >= self.rstart) & (d < self.rend)]
+            d = np.asarray(self.fields[name], np.int64)
+            if self.natural is not None:
+                d = np.sort(self.natural[d])
+            d = d[(d >= self.rstart) & (d < self.rend)].astype(PETSc.IntType)
             splits.append((name, PETSc.IS().createGeneral(d, comm=self.comm)))
         pc.setFieldSplitIS(*splits)
 
@@ -293,7 +372,7 @@ class Problem:
     # ---- solves ----------------------------------------------------------------------------
     def _owned(self, u0):
         X = self.U.duplicate()
-        X.setArray(np.asarray(u0, float)[self.rstart:self.rend])
+        X.setArray(np.asarray(u0, float)[self._serial_owned])
         return X
 
     def solve_steady(self, u0, t=0.0):
