@@ -20,9 +20,13 @@ Terms take their dof arrays from here (``udofs``: node -> (u_r, u_z)), never an 
 new field does not change them; ``field_dofs(name)`` gives the index set of a field, for
 example for ``-pc_type fieldsplit``.
 
-Parallel runs: every rank builds the same serial DMPlex (``COMM_SELF``) and evaluates all
-terms (replicated assembly, see :mod:`sealts.problem.problem`); PETSc distributes the rows
-of the global vector. A distributed DMPlex with ghosted local vectors is not done yet.
+This serial layout, on ``COMM_SELF``, defines the *serial* (natural) dof numbers: outputs,
+the pressure front and every full state vector a run hands around use them. Parallel runs
+(``mpiexec``) distribute the mesh instead: :class:`sealts.mesh.partition.Partition` builds
+this DMPlex (with the same labels) on rank 0 and calls ``DMPlex.distribute``; its
+``Numbering`` gives the same serial dofs (and equals this numbering on one rank) plus the
+global and per-rank local numbers, so each rank assembles only its own cells
+(:mod:`sealts.problem.problem`).
 """
 import numpy as np
 from petsc4py import PETSc
@@ -31,6 +35,17 @@ from petsc4py import PETSc
 def vertex_dofs(n_nodes):
     """The node -> (u_r, u_z) dofs of a displacement-only layout: 2i, 2i + 1."""
     return np.arange(2 * n_nodes, dtype=np.int64).reshape(n_nodes, 2)
+
+
+def label_boundaries(dm, mesh, v0):
+    """One DMPlex label per named boundary: its edges and their vertices, value 1."""
+    for name, edges in mesh.edges.items():
+        dm.createLabel(name)
+        for a, b in np.asarray(edges):
+            for p in dm.getJoin([v0 + a, v0 + b]):
+                dm.setLabelValue(name, int(p), 1)
+            dm.setLabelValue(name, int(v0 + a), 1)
+            dm.setLabelValue(name, int(v0 + b), 1)
 
 
 class Layout:
@@ -47,13 +62,7 @@ class Layout:
         if (c1 - c0, v1 - v0) != (n_cells, n_nodes):
             raise ValueError("DMPlex does not reproduce the mesh's cells and vertices")
         self.dm, self.v0, self.c0 = dm, v0, c0
-        for name, edges in mesh.edges.items():
-            dm.createLabel(name)
-            for a, b in np.asarray(edges):
-                for p in dm.getJoin([v0 + a, v0 + b]):
-                    dm.setLabelValue(name, int(p), 1)
-                dm.setLabelValue(name, int(v0 + a), 1)
-                dm.setLabelValue(name, int(v0 + b), 1)
+        label_boundaries(dm, mesh, v0)
 
         fields = [("displacement", 2)]
         if film:
