@@ -67,8 +67,10 @@ def test_user_error_under_mpi_exits_on_every_rank(tmp_path):
 @pytest.mark.mpi
 @pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
 def test_mounted_and_pressurised_seal_on_two_ranks(tmp_path):
-    """The coarse O-ring mounted and pressurised on 2 ranks matches 1 rank. (The seal's
-    assembly is replicated on every rank for now; the linear solve is PETSc's, redundant LU.)"""
+    """The coarse O-ring mounted and pressurised on 2 ranks matches 1 rank. The seal's
+    DMPlex is distributed and each rank assembles its own cells (rank 0 also the rod, groove
+    and pressure terms along the boundary); the summary reports the cells per rank. The
+    linear solve is PETSc's, redundant LU."""
     text = (CONFIGS / "oring_pressurise.toml").read_text()
     text = text.replace("h_contact = 0.01 ", "h_contact = 0.1 ").replace(
         "h_bulk = 0.05 ", "h_bulk = 0.4 ").replace(
@@ -85,7 +87,38 @@ def test_mounted_and_pressurised_seal_on_two_ranks(tmp_path):
         out[n] = json.loads((tmp_path / f"r{n}" / "summary.json").read_text())
     a, b = out[1]["results"], out[2]["results"]
     assert out[2]["ranks"] == 2
+    cells = out[2]["cells_per_rank"]
+    assert len(cells) == 2 and min(cells) > 0 and sum(cells) == out[1]["elements"]
+    assert out[1]["cells_per_rank"] == [out[1]["elements"]]
     for key in ("contact_force_total", "contact_width", "p_contact_max"):
         assert b[key] == pytest.approx(a[key], rel=1e-6)
     assert b["mounted"]["contact_force_total"] == pytest.approx(
         a["mounted"]["contact_force_total"], rel=1e-6)
+
+
+@pytest.mark.mpi
+@pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
+def test_viscoelastic_hold_on_two_ranks(tmp_path):
+    """The coarse O-ring's viscoelastic hold (two Prony terms, 1 -> 3 MPa, held 1 s) on 2
+    ranks matches 1 rank: the Prony dofs live on each rank's own cells."""
+    text = (CONFIGS / "oring_hold.toml").read_text()
+    text = text.replace('prony = "table2"', 'prony = "custom"\nprony_g = [0.5, 0.3]\n'
+                        'prony_tau = [0.01, 1.0]').replace("t_min = 1e-4", "t_min = 1e-3")
+    text = text.replace("t_end = 1e6 ", "t_end = 1.0 ").replace("h_contact = 0.05",
+                                                               "h_contact = 0.1")
+    text = text.replace("h_bulk = 0.2", f'h_bulk = 0.4\ncache = "{tmp_path}"')
+    cfg = tmp_path / "hold.toml"
+    cfg.write_text(text)
+    out = {}
+    for n in (1, 2):
+        cmd = [sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(tmp_path / f"r{n}")]
+        if n > 1:
+            cmd = [MPIEXEC, "-n", str(n)] + cmd
+        r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=900)
+        assert r.returncode == 0, r.stderr
+        out[n] = json.loads((tmp_path / f"r{n}" / "summary.json").read_text())
+    assert min(out[2]["cells_per_rank"]) > 0
+    a, b = out[1]["results"], out[2]["results"]
+    assert out[2]["hold"]["unknowns"] == out[1]["hold"]["unknowns"]
+    for key in ("contact_force_total", "p_contact_max"):
+        assert b[key] == pytest.approx(a[key], rel=1e-5)

@@ -110,6 +110,24 @@ class Layout:
                                      for c in range(c0, c1)], np.int64)[:, None]
                            + np.arange(k)) if k else np.zeros((n_cells, 0), np.int64)
 
+    # a serial layout is its own local numbering: replicated problems (every rank holds
+    # every dof) give their terms serial dofs; the names match a distributed Numbering's
+    @property
+    def cells(self):
+        return np.arange(self.prony_dofs.shape[0])
+
+    @property
+    def serial(self):
+        return np.arange(self.n)
+
+    @property
+    def udofs_local(self):
+        return self.udofs
+
+    @property
+    def prony_local(self):
+        return self.prony_dofs
+
     def field_dofs(self, name):
         """All dofs of one field, sorted."""
         arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,

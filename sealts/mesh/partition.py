@@ -124,8 +124,8 @@ class Numbering:
     rank's work vector): ``ltog`` (local -> global), ``owned`` (mask, the first
     ``n_owned``), ``serial`` (local -> serial), ``local_of_serial`` (serial -> local, -1
     if absent), ``udofs_local`` (node -> local dofs, -1 if absent), ``prony_local`` (the
-    rank's cells -> local dofs). ``distributed``: each local row is assembled by this rank
-    alone (no replication), so every local contribution is added up."""
+    rank's cells ``cells`` -> local dofs). ``distributed``: each local row is assembled by
+    this rank alone (no replication), so every local contribution is added up."""
 
     distributed = True
 
@@ -154,6 +154,7 @@ class Numbering:
         self.local_of_serial = np.full(self.n, -1, np.int64)
         self.local_of_serial[self.serial] = np.arange(self.serial.size)
         self.udofs_local = self.local_of_serial[self.udofs]
+        self.cells = part.cells
         self.prony_local = self.local_of_serial[self.prony_dofs[part.cells]]
         self.identity = part.size == 1
 

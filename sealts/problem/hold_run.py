@@ -10,7 +10,8 @@ with the Prony material of :mod:`sealts.solid.viscoelastic`:
   terms) and the seal creeps towards the long-term state;
 * terms are classified over [viscoelastic.t_min, hold.t_end] (``classify``): relaxed terms
   soften the elastic part, frozen ones keep the fixed stress g_i S_iso(u0), active ones are
-  the ``prony`` field of the Layout and TS integrates them with the displacements;
+  the ``prony`` field (on cells, see :mod:`sealts.mesh.partition`: each rank carries
+  those of its own cells) and TS integrates them with the displacements;
 * the rod and groove are at their final positions; the pressure-penetration front is
   updated after each accepted step, as in step 2, under-relaxed where it reverses
   (:class:`sealts.solid.pressure.RelaxedFront`).
@@ -25,7 +26,6 @@ from dataclasses import replace
 import numpy as np
 
 from ..contact.rigid import node_contact_pressure
-from ..mesh.layout import Layout
 from ..solid.pressure import PressureLoad, RelaxedFront
 from ..solid.prony import TABLE2_G, TABLE2_TAU, PronySeries, classify, wlf_shift
 from ..solid.term import SolidTerm
@@ -76,21 +76,24 @@ class ViscoelasticSolid:
 
     def terms(self, layout, u0):
         """(elastic SolidTerm, PronyTerm, H0 as the layout's prony values per cell) from the
-        displacement u0 of the model's own layout."""
+        displacement u0 of the model's own layout, on the layout's cells (``cells``) in its
+        local dofs: every cell in serial dofs for a serial Layout (replicated problems),
+        this rank's cells for the model's distributed Numbering."""
         s, c, m = self.series, self.classes, self.model
         keep = 1.0 - s.g[c.relaxed].sum()
         elastic = replace(self.instantaneous, c10=self.instantaneous.c10 * keep,
                           c01=self.instantaneous.c01 * keep)
         mesh = m.mesh
-        solid = SolidTerm(mesh.X, mesh.conn, elastic, m.axisym, udofs=layout.udofs)
+        solid = SolidTerm(mesh.X, mesh.conn[layout.cells], elastic, m.axisym,
+                          udofs=layout.udofs_local)
         prony = PronyTerm(solid, self.instantaneous, s.g[c.active], s.tau[c.active],
-                          layout.prony_dofs, shift=self.shift_of_t)
+                          layout.prony_local, shift=self.shift_of_t)
         u = np.zeros(layout.n)
         u[layout.udofs] = u0[m.udofs]
-        return solid, prony, self.relax(prony, u)
+        return solid, prony, self.relax(prony, u[layout.serial])
 
     def relax(self, prony, u):
-        """The relaxed state at the displacement in u (the layout's vector): sets the frozen
+        """The relaxed state at the displacement in u (the layout's local vector): sets the frozen
         terms' stress g S_iso(u) and returns H_i = S_iso(u) per cell (the prony values)."""
         H0, S0 = prony.equilibrium(u)
         prony.frozen = self.series.g[self.classes.frozen].sum() * S0
@@ -106,7 +109,8 @@ class HoldStep:
         self.series, self.shift_of_t, self.shift = ves.series, ves.shift_of_t, ves.shift
         self.classes = ves.classes
         mesh = model.mesh
-        self.layout = lay = Layout(mesh, prony=ves.prony_size)
+        # the model's distributed mesh, with the Prony field on its cells
+        self.layout = lay = model.partition.numbering(prony=ves.prony_size)
         assert np.array_equal(lay.udofs, model.udofs)  # vertices first: u0 maps as it is
         X = mesh.X
         self.solid, self.prony, H0 = ves.terms(lay, u0)
@@ -122,15 +126,19 @@ class HoldStep:
                                  model.axisym, old.edges[old.start, 0], udofs=lay.udofs,
                                  p_crit=old.p_crit)
         self.load.set_reach(old.reach)
+        # serial start vector; each rank fills the internal variables of its own cells
         self.U0 = np.zeros(lay.n)
         self.U0[lay.udofs] = u0[model.udofs]
-        self.U0[lay.prony_dofs] = H0
-        terms = [self.solid, self.prony, self.rod, self.groove, self.load]
+        self.U0[lay.prony_dofs[lay.cells]] = H0
+        terms = model.local_terms([self.rod, self.groove, self.load], dofs=lay,
+                                  solid=self.solid)
+        terms.insert(1, self.prony)
         fields = {"displacement": lay.field_dofs("displacement")}
         if ves.prony_size:
             fields["prony"] = lay.field_dofs("prony")
-        self.problem = Problem(lay.n, terms, comm=comm, prefix="hold_", linesearch="basic",
-                               snes_atol=1e-9 * model.force_scale, fields=fields)
+        self.problem = Problem(lay.n, terms, comm=model.comm, prefix="hold_",
+                               linesearch="basic", snes_atol=1e-9 * model.force_scale,
+                               fields=fields, dofs=lay)
 
     def node_contact_pressure(self, t, u):
         return node_contact_pressure(self.model.mesh.X.shape[0], self.groove, self.rod, t, u)
@@ -162,8 +170,8 @@ class HoldStep:
         load = copy.copy(self.load)
         load.pressure = lambda t: self.p_to
         # the hold's state in the long-term problem: its out-of-balance nodal forces
-        residual = Problem(2 * m.mesh.X.shape[0], [m.solid, self.rod, self.groove, load],
-                           comm=self.problem.comm).residual(t_end, u, np.zeros_like(u))
+        residual = Problem(m.n, m.local_terms([self.rod, self.groove, load]), comm=m.comm,
+                           dofs=m.dofs).global_residual(t_end, u)
         out = {"long_term_residual_max_N": float(np.abs(residual).max())}
         try:
             # pseudo-time 2..3 (the rod and groove of SealModel are final for t >= 1)

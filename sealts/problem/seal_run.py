@@ -16,7 +16,7 @@ import numpy as np
 
 from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
                              tributary_lengths)
-from ..mesh.layout import Layout
+from ..mesh.partition import Partition
 from ..problem import Problem, SolveError
 from ..solid.stabilisation import ViscousStabilisation
 from ..solid.term import SolidTerm
@@ -29,17 +29,32 @@ def ramp(t):
 
 
 class SealModel:
-    """Seal mesh + material + rod and groove, as Problem terms."""
+    """Seal mesh + material + rod and groove, as Problem terms.
+
+    The mesh is distributed over ``comm`` (:class:`sealts.mesh.partition.Partition`): each
+    rank's ``solid`` covers its own cells, in its local dofs. ``rod``, ``groove``, ``stab``
+    (and the pressure ``load``) are written in serial dofs and cover the whole boundary
+    (mesh): every rank evaluates them on the gathered state for outputs and front updates,
+    and rank 0 alone assembles the rod, groove and pressure terms (``local_terms``). The
+    stabilisation is assembled by each rank over the nodes it owns. Problems run on the
+    model's communicator; the ``comm`` arguments of its methods are kept for callers."""
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
                  h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0,
-                 corner_radius=0.0):
+                 corner_radius=0.0, comm=None):
+        from petsc4py import PETSc
+
+        from ..solid.pressure import boundary_loop
         self.mesh, self.material, self.axisym = mesh, material, axisym
+        self.comm = comm = comm or PETSc.COMM_WORLD
         X = mesh.X
-        self.layout = Layout(mesh)
-        self.n = self.layout.n
-        udofs = self.udofs = self.layout.udofs
-        self.solid = SolidTerm(X, mesh.conn, material, axisym, udofs=udofs, heating=ramp)
+        root_nodes = np.union1d(mesh.boundary_nodes(), boundary_loop(mesh.conn).ravel())
+        self.partition = part = Partition(mesh, comm, root_nodes=root_nodes)
+        self.dofs = dofs = part.numbering()
+        self.n = dofs.n
+        udofs = self.udofs = dofs.udofs                        # serial
+        self.solid = SolidTerm(X, mesh.conn[part.cells], material, axisym,
+                               udofs=dofs.udofs_local, heating=ramp)
         chain = mesh.chain("rod_side")
         r_out = X[:, 0].max()
         r_in = X[chain, 0].min()
@@ -54,15 +69,39 @@ class SealModel:
         self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
                                     lambda t: groove_walls, penalty=penalty, depth=depth,
                                     corner_radius=corner_radius, udofs=udofs)
-        # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2)
-        vol = np.bincount(mesh.conn.ravel(), np.repeat(self.solid.W.sum(1) / 4.0, 4),
+        # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2);
+        # summed over the ranks' cells
+        mpi = comm.tompi4py()
+        vol = np.bincount(self.solid.conn.ravel(), np.repeat(self.solid.W.sum(1) / 4.0, 4),
                           minlength=X.shape[0])
+        vol = mpi.allreduce(vol) if comm.getSize() > 1 else vol
         self.stab = ViscousStabilisation(udofs.ravel(), np.repeat(vol, 2), stabilisation)
-        self.terms = [self.solid, self.rod, self.groove, self.stab]
+        own = part.owned_nodes
+        self.stab_local = ViscousStabilisation(dofs.udofs_local[own].ravel(),
+                                               np.repeat(vol[own], 2), stabilisation)
+        self.terms = self.local_terms([self.rod, self.groove], stab=True)
         # force scale G * cross-section * circumference (N); Newton converges to 1e-9 of it
-        cross = float(self.solid.W.sum()) / (2 * np.pi * X[:, 0].mean() if axisym else depth)
+        volume = float(self.solid.W.sum())
+        volume = mpi.allreduce(volume) if comm.getSize() > 1 else volume
+        cross = volume / (2 * np.pi * X[:, 0].mean() if axisym else depth)
         circ = 2 * np.pi * X[:, 0].mean() if axisym else depth
         self.force_scale = material.shear_modulus * cross * circ
+        self._full_solid = None
+
+    def local_terms(self, boundary, stab=False, dofs=None, solid=None):
+        """This rank's terms: its cells' solid, (its owned nodes' stabilisation), and on
+        rank 0 the ``boundary`` terms (serial dofs) on its local vector."""
+        dofs = dofs or self.dofs
+        out = [solid or self.solid] + dofs.on_root(boundary)
+        return out + [self.stab_local] if stab else out
+
+    def full_solid(self):
+        """The solid term over every cell in serial dofs (fields output, one rank)."""
+        if self._full_solid is None:
+            s = self.solid
+            self._full_solid = SolidTerm(self.mesh.X, self.mesh.conn, self.material,
+                                         self.axisym, udofs=self.udofs, heating=s.heating)
+        return self._full_solid
 
     def rod_radius(self, t):
         return self.r_rod0 + (self.r_rod_final - self.r_rod0) * ramp(t)
@@ -81,8 +120,9 @@ class SealModel:
         du/dt over the last accepted step.
         """
         atol = 1e-9 * self.force_scale
-        problem = Problem(self.n, self.terms + extra, comm=comm, linesearch="basic",
-                          snes_atol=atol)
+        comm = self.comm
+        problem = Problem(self.n, self.local_terms([self.rod, self.groove] + extra, stab=True),
+                          comm=comm, linesearch="basic", snes_atol=atol, dofs=self.dofs)
         hist = []
 
         def record(ts, step, t, u):
@@ -104,9 +144,9 @@ class SealModel:
     def _static(self, extra, u, t, comm):
         """Newton from u on the unstabilised equilibrium at t (raises SolveError); its
         iterations count towards ``self.problem``'s."""
-        static = Problem(self.n, [self.solid, self.rod, self.groove] + extra, comm=comm,
-                         linesearch="basic", snes_atol=1e-9 * self.force_scale,
-                         prefix="static_")
+        static = Problem(self.n, self.local_terms([self.rod, self.groove] + extra),
+                         comm=self.comm, linesearch="basic",
+                         snes_atol=1e-9 * self.force_scale, prefix="static_", dofs=self.dofs)
         static.max_it = 10
         try:
             return static.solve_steady(u, t)
@@ -209,8 +249,9 @@ class SealModel:
         return out
 
 
-def model_from_scene(scene):
-    """Mesh (cached) and SealModel for a ``model = "seal"`` scene."""
+def model_from_scene(scene, comm=None):
+    """Mesh (cached) and SealModel for a ``model = "seal"`` scene, distributed over comm
+    (PETSc.COMM_WORLD by default)."""
     from ..mesh.seal_mesh import ORing, RectangularRing, build_mesh
     from ..solid.term import Hyperelastic
     sl, gr, m, mat = scene.seal, scene.groove, scene.mesh, scene.material
@@ -231,7 +272,7 @@ def model_from_scene(scene):
                      axisym=sl.symmetry == "axisymmetric", h_mix=scene.asperity.h_mix,
                      p_mix=scene.asperity.p_mix, penalty=scene.mount.penalty,
                      stabilisation=scene.mount.stabilisation,
-                     corner_radius=gr.corner_radius)
+                     corner_radius=gr.corner_radius, comm=comm)
 
 
 def _file_mesh(path, cache, r_rod, groove):
@@ -264,7 +305,7 @@ def _file_mesh(path, cache, r_rod, groove):
 def element_stresses(model, u):
     """Element-mean Cauchy stress (rr, zz, tt, rz), von Mises and pressure (MPa)."""
     from ..solid.neo_hooke import cauchy_stress
-    f, P, p_el, _ = model.solid.state(u)
+    f, P, p_el, _ = model.full_solid().state(u)
     s = cauchy_stress(f.reshape(-1, 5), P.reshape(-1, 5), np.repeat(p_el, 4))
     s = s.reshape(-1, 4, 4).mean(1)
     rr, zz, tt, rz = s.T
@@ -292,9 +333,11 @@ def run_seal(scene, writer, comm):
     from .film_run import Progress
     t_wall = time.perf_counter()
     say = Progress(comm, scene.output.progress)
-    model = model_from_scene(scene)
+    model = model_from_scene(scene, comm)
+    cells = model.partition.cells_per_rank
     say(f"mesh: {model.mesh.X.shape[0]} nodes, {model.mesh.conn.shape[0]} quads, "
-        f"{model.n} unknowns", force=True)
+        f"{model.n} unknowns" + (f"; cells per rank {cells}" if len(cells) > 1 else ""),
+        force=True)
     def on_step(ts, step, t, u):
         h = model.rod.gap(t, u)
         say(f"step {step:4d}  t = {t:.4g}  dt = {ts.getTimeStep():.3g}  "
@@ -351,6 +394,7 @@ def run_seal(scene, writer, comm):
                      else "mount + pressurise" if p_in != 0.0 else "mount"),
         "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
         "unknowns": model.n, "ranks": comm.getSize(),
+        "cells_per_rank": model.partition.cells_per_rank,
         "wall_time_s": time.perf_counter() - t_wall,
         "steps_accepted": c.steps, "steps_rejected": c.rejected,
         "newton_iterations": c.newton, "linear_iterations": c.linear,
