@@ -79,7 +79,6 @@ class SealModel:
         own = part.owned_nodes
         self.stab_local = ViscousStabilisation(dofs.udofs_local[own].ravel(),
                                                np.repeat(vol[own], 2), stabilisation)
-        self.terms = self.local_terms([self.rod, self.groove], stab=True)
         # force scale G * cross-section * circumference (N); Newton converges to 1e-9 of it
         volume = float(self.solid.W.sum())
         volume = mpi.allreduce(volume) if comm.getSize() > 1 else volume
