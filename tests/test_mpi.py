@@ -108,6 +108,8 @@ def test_viscoelastic_hold_on_two_ranks(tmp_path):
     text = text.replace("t_end = 1e6 ", "t_end = 0.05 ").replace("h_contact = 0.05",
                                                                "h_contact = 0.1")
     text = text.replace("h_bulk = 0.2", f'h_bulk = 0.4\ncache = "{tmp_path}"')
+    for edit in ("t_end = 0.05 ", "h_contact = 0.1", "h_bulk = 0.4", 'prony = "custom"'):
+        assert edit in text, edit   # the scene file changed: keep this run short
     cfg = tmp_path / "hold.toml"
     cfg.write_text(text)
     out = {}
