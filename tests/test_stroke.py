@@ -94,3 +94,48 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     f = vstep.problem.residual(0.0, V0, np.zeros_like(V0))
     assert np.abs(f[vlay.prony_dofs]).max() < 1e-9 * model.force_scale
     assert np.abs(f[vlay.udofs]).max() < 10 * 1e-9 * model.force_scale
+
+
+def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
+    """A run writes state.h5 after steps 1-2; a scene with [start] state = that file skips
+    them and its stroke is the same (leakage, friction and steps to round-off: the state is
+    the same to the last bit, so the run is). A state saved on another mesh is a one-line
+    scene error, exit 2."""
+    import json
+    import subprocess
+    import sys
+
+    from conftest import CONFIGS
+    text = (CONFIGS / "oring_stroke.toml").read_text()
+    text = text.replace("h_contact = 0.05 ", "h_contact = 0.1 ").replace(
+        "h_bulk = 0.2 ", "h_bulk = 0.4 ").replace("[mesh]", f'[mesh]\ncache = "{tmp_path}"')
+    text = text.replace('velocity = "sine"', 'velocity = "ramp-hold"\nt_ramp = 0.01').replace(
+        "t_end = 10.0 ", "t_end = 0.02 ").replace("output_times = [1.0, 2.5, 5.0, 6.0, 7.5]",
+                                                 "output_times = []")
+    first = tmp_path / "first.toml"
+    first.write_text(text)
+
+    def run(cfg, out):
+        r = subprocess.run([sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(out)],
+                           capture_output=True, text=True, timeout=600)
+        return r, (json.loads((out / "summary.json").read_text()) if r.returncode == 0
+                   else None)
+
+    r, a = run(first, tmp_path / "a")
+    assert r.returncode == 0, r.stderr
+    state = tmp_path / "a" / "state.h5"
+    assert state.is_file()
+    again = tmp_path / "again.toml"
+    again.write_text(text + f'\n[start]\nstate = "{state}"\n')
+    r, b = run(again, tmp_path / "b")
+    assert r.returncode == 0, r.stderr
+    assert "restarted from" in r.stdout
+    assert b["analysis"] == "restart + stroke"
+    for key in ("leakage_out", "leakage_in", "peak_friction_outstroke", "h_min"):
+        assert b["stroke"][key] == pytest.approx(a["stroke"][key], rel=1e-9, abs=1e-12)
+    assert b["stroke"]["steps_accepted"] == a["stroke"]["steps_accepted"]
+    other = tmp_path / "other.toml"
+    other.write_text(again.read_text().replace("h_contact = 0.1 ", "h_contact = 0.2 "))
+    r, _ = run(other, tmp_path / "c")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1
+    assert "start.state" in r.stderr and "another mesh" in r.stderr

@@ -9,6 +9,8 @@ OUTDIR/
   stroke_profiles.csv  seal scenes with a stroke: t (s of the stroke), y, h, p, p_asperity,
                  tau, tau_solid (film pressure and shear, asperity pressure and friction)
   *profiles.png  film thickness (um), pressures and shear along y at each output time
+  state.h5       seal scenes: the mounted (and pressurised) state, for [start] state of a
+                 later scene
   series.png     transient runs: flows, leakage and time step over time
 
 Only rank 0 writes. Rows are flushed as they come.
@@ -61,6 +63,20 @@ class Writer:
         f, w = self._csv("series.csv", list(row))
         w.writerow({k: (f"{v:.10g}" if isinstance(v, float) else v) for k, v in row.items()})
         f.flush()
+
+    def state(self, arrays, attrs, name="state.h5"):
+        """An HDF5 file of named arrays and scalar attributes, written whole (a temporary
+        file renamed into place, so a reader never sees half a state)."""
+        if not self.root:
+            return
+        import h5py
+        tmp = self.dir / (name + ".tmp")
+        with h5py.File(tmp, "w") as f:
+            for k, v in arrays.items():
+                f.create_dataset(k, data=np.asarray(v))
+            for k, v in attrs.items():
+                f.attrs[k] = v
+        os.replace(tmp, self.dir / name)
 
     def summary(self, data):
         if not self.root:

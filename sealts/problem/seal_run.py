@@ -168,12 +168,7 @@ class SealModel:
         accepted step, advancing only; then the front is settled at p_in
         (``settle_front``). Long-term material, frictionless (the film comes with the
         coupling)."""
-        from ..solid.pressure import PressureLoad
-        chain_p = self.mesh.nodes("pressure_side")
-        start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
-        self.load = PressureLoad(self.mesh.X, self.mesh.conn,
-                                 lambda t: p_in * ramp(t - t0), self.axisym, start,
-                                 udofs=self.udofs, p_crit=p_crit)
+        self.pressure_load(p_in, t0, p_crit)
         self.load.update(self.node_contact_pressure(t0, u0), 0.0)
 
         def update_front(ts, step, t, u):
@@ -185,6 +180,17 @@ class SealModel:
         u = self._quasi_static([self.load], u0, t0, t_hold, dt0, t0 + 1.0, comm,
                                update_front)
         return self.settle_front(self.load, u, t_hold, dt0, comm)
+
+    def pressure_load(self, p_in, t0, p_crit):
+        """``self.load``: p_in ramped from t0 over one pseudo-time unit on the free surface,
+        entering at the pressure side's most exposed node (nothing wetted yet)."""
+        from ..solid.pressure import PressureLoad
+        chain_p = self.mesh.nodes("pressure_side")
+        start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
+        self.load = PressureLoad(self.mesh.X, self.mesh.conn,
+                                 lambda t: p_in * ramp(t - t0), self.axisym, start,
+                                 udofs=self.udofs, p_crit=p_crit)
+        return self.load
 
     def settle_front(self, load, u, t, dt0, comm, tol=1e-4, max_updates=30):
         """Front update and static solve in turn until the front moves by less than ``tol``
@@ -342,6 +348,56 @@ def run_seal(scene, writer, comm):
         say(f"step {step:4d}  t = {t:.4g}  dt = {ts.getTimeStep():.3g}  "
             f"rod force = {model.rod.forces(t, u).sum():.4g} N  min h = {h.min() * 1e3:.4g} um")
 
+    p_in = scene.fluid.p_in
+    if scene.start.state:
+        u, res = _restart(model, scene, say)
+        counters = []
+    else:
+        u, res, counters = _mount_and_pressurise(model, scene, writer, comm, say, on_step)
+        state = {"u": u[model.udofs], "X": model.mesh.X}
+        attrs = {"p_in": p_in, "scene": scene.name, "source": scene.source}
+        if p_in != 0.0:
+            state["front_reach"] = np.asarray(model.load.reach, float)
+            attrs["p_crit"] = model.load.p_crit
+        writer.state(state, attrs)
+    hold = scene.hold
+    hold_info = stroke_info = None
+    if hold.p_end != 0.0:
+        u, res, hold_info, hold_counters = _run_hold(model, u, scene, writer, comm, say, res)
+        counters.append(hold_counters)
+    if scene.stroke.velocity != "none":
+        from .stroke_run import run_stroke
+        u, stroke_info, stroke_counters = run_stroke(model, u, scene, writer, comm, say)
+        counters.append(stroke_counters)
+    if writer.root:
+        write_fields(str(writer.dir / "fields.xdmf"), model, u)
+    from .problem import Counters
+    c = Counters(*[sum(getattr(k, f) for k in counters)
+                   for f in ("steps", "rejected", "newton", "linear", "residuals", "jacobians")])
+    summary = {
+        "scene": scene.name, "source": scene.source,
+        "analysis": ("restart" if scene.start.state
+                     else "mount" if p_in == 0.0 else "mount + pressurise")
+        + (" + viscoelastic hold" if hold_info else "") + (" + stroke" if stroke_info else ""),
+        "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
+        "unknowns": model.n, "ranks": comm.getSize(),
+        "cells_per_rank": model.partition.cells_per_rank,
+        "wall_time_s": time.perf_counter() - t_wall,
+        "steps_accepted": c.steps, "steps_rejected": c.rejected,
+        "newton_iterations": c.newton, "linear_iterations": c.linear,
+        "results": res,
+        "units": {"length": "mm", "pressure": "MPa", "force": "N"},
+    }
+    if hold_info:
+        summary["hold"] = hold_info
+    if stroke_info:
+        summary["stroke"] = stroke_info
+    writer.summary(summary)
+    return summary
+
+
+def _mount_and_pressurise(model, scene, writer, comm, say, on_step):
+    """Steps 1-2 of the paper: (u, results, counters)."""
     mount = scene.mount
     u = model.mount(t_hold=mount.t_hold, dt0=mount.dt, comm=comm, on_step=on_step)
     t_end = mount.t_hold
@@ -372,40 +428,40 @@ def run_seal(scene, writer, comm):
                 f"{model.front_settled:.3g} edges); try a larger fluid.p_crit", force=True)
         y, h, p = model.contact_profile(t_end, u)
         writer.profile(t_end, {"y": y, "h": h, "p_contact": p})
-    hold = scene.hold
-    hold_info = stroke_info = None
-    if hold.p_end != 0.0:
-        u, res, hold_info, hold_counters = _run_hold(model, u, scene, writer, comm, say, res)
-        counters.append(hold_counters)
-    if scene.stroke.velocity != "none":
-        from .stroke_run import run_stroke
-        u, stroke_info, stroke_counters = run_stroke(model, u, scene, writer, comm, say)
-        counters.append(stroke_counters)
-    if writer.root:
-        write_fields(str(writer.dir / "fields.xdmf"), model, u)
-    c = type(counters[0])(*[sum(getattr(k, f) for k in counters)
-                            for f in ("steps", "rejected", "newton", "linear", "residuals",
-                                      "jacobians")])
-    summary = {
-        "scene": scene.name, "source": scene.source,
-        "analysis": ("mount + pressurise + viscoelastic hold" if hold_info
-                     else "mount + pressurise + stroke" if stroke_info
-                     else "mount + pressurise" if p_in != 0.0 else "mount"),
-        "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
-        "unknowns": model.n, "ranks": comm.getSize(),
-        "cells_per_rank": model.partition.cells_per_rank,
-        "wall_time_s": time.perf_counter() - t_wall,
-        "steps_accepted": c.steps, "steps_rejected": c.rejected,
-        "newton_iterations": c.newton, "linear_iterations": c.linear,
-        "results": res,
-        "units": {"length": "mm", "pressure": "MPa", "force": "N"},
-    }
-    if hold_info:
-        summary["hold"] = hold_info
-    if stroke_info:
-        summary["stroke"] = stroke_info
-    writer.summary(summary)
-    return summary
+    return u, res, counters
+
+
+def _restart(model, scene, say):
+    """The state of an earlier run's steps 1-2 (``start.state``): (u, results). The mesh
+    and p_in must be the ones it was saved with (one-line SceneError otherwise)."""
+    import h5py
+
+    from ..scene import SceneError
+    path = scene.start.state
+    try:
+        with h5py.File(path, "r") as f:
+            X, un = f["X"][()], f["u"][()]
+            reach = f["front_reach"][()] if "front_reach" in f else None
+            attrs = dict(f.attrs)
+    except (OSError, KeyError) as e:
+        raise SceneError(f"start.state: {path} is not a sealts state file ({e})") from None
+    if X.shape != model.mesh.X.shape or not np.allclose(X, model.mesh.X, atol=1e-12):
+        raise SceneError(f"start.state: {path} was saved for another mesh "
+                         f"({X.shape[0]} nodes; this scene's has {model.mesh.X.shape[0]})")
+    p_in = scene.fluid.p_in
+    if float(attrs.get("p_in", 0.0)) != p_in:
+        raise SceneError(f"start.state: {path} was pressurised to {attrs.get('p_in'):g} MPa, "
+                         f"not fluid.p_in = {p_in:g} MPa")
+    u = np.zeros(model.n)
+    u[model.udofs] = un
+    t = 2 * scene.mount.t_hold if p_in != 0.0 else scene.mount.t_hold
+    if p_in != 0.0:
+        model.pressure_load(p_in, scene.mount.t_hold, float(attrs["p_crit"]))
+        model.load.set_reach(reach)
+    model.static, model.udot = True, np.zeros(model.n)
+    say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not repeated",
+        force=True)
+    return u, model.results(t, u)
 
 
 def _run_hold(model, u, scene, writer, comm, say, res_pressurised):

@@ -194,6 +194,12 @@ class Stroke:
 
 
 @dataclass(frozen=True)
+class Start:
+    state: str = option("", doc="model = seal: start from a state.h5 written by an earlier run "
+                                "(its mounted and pressurised seal) instead of steps 1-2")
+
+
+@dataclass(frozen=True)
 class Output:
     plot: bool = option(True, doc="write PNG plots")
     progress: bool = option(True, doc="print t, dt and Newton iterations while running")
@@ -220,6 +226,7 @@ class Scene:
                                         doc="Prony series and WLF shift (model = seal)")
     hold: Hold = option(Hold(), doc="viscoelastic pressure step and hold (model = seal)")
     stroke: Stroke = option(Stroke(), doc="transient stroke with the film (model = seal)")
+    start: Start = option(Start(), doc="restart from a saved state (model = seal)")
     output: Output = option(Output(), doc="what to write")
     petsc: dict = field(default_factory=dict, metadata=dict(doc="default PETSc options"))
     source: str = field(default="<embedded>", metadata=dict(doc="where the scene came from"))
@@ -364,6 +371,11 @@ def _check_consistency(s, base):
                              "'mooney-rivlin'")
         _check_viscoelastic(s)
         _check_stroke(s, base)
+        if s.start.state:
+            path = Path(s.start.state) if Path(s.start.state).is_absolute() \
+                else base / s.start.state
+            if not path.is_file():
+                raise SceneError(f"start.state: no such file {path}")
         return
     a, g, f = s.analysis, s.gap, s.film
     if a.type == "transient":
@@ -424,7 +436,11 @@ def scene_from_table(table, source="<table>", base=None):
     stroke = scene.stroke
     if stroke.table and not Path(stroke.table).is_absolute():
         stroke = replace(stroke, table=str((base / stroke.table).resolve()))
-    return replace(scene, petsc=petsc, source=source, film=film, seal=seal, stroke=stroke)
+    start = scene.start
+    if start.state and not Path(start.state).is_absolute():
+        start = replace(start, state=str((base / start.state).resolve()))
+    return replace(scene, petsc=petsc, source=source, film=film, seal=seal, stroke=stroke,
+                   start=start)
 
 
 def load_scene(path):
