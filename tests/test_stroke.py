@@ -97,7 +97,8 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
 
 
 def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
-    """A run writes state.h5 after steps 1-2; a scene with [start] state = that file skips
+    """A run writes state.h5 after steps 1-2 and the stroke's fields as an XDMF time series;
+    a scene with [start] state = that file skips
     them and its stroke is the same (leakage, friction and steps to round-off: the state is
     the same to the last bit, so the run is). A state saved on another mesh is a one-line
     scene error, exit 2."""
@@ -123,6 +124,16 @@ def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
 
     r, a = run(first, tmp_path / "a")
     assert r.returncode == 0, r.stderr
+    # the fields as a time series that meshio (as ParaView) reads: t = 0 and t_end, the
+    # film pressure p_in at the pressurised end at t = 0
+    import meshio
+    series = meshio.xdmf.TimeSeriesReader(str(tmp_path / "a" / "stroke_fields.xdmf"))
+    points, cells = series.read_points_cells()
+    assert series.num_steps == 2 and cells[0].type == "quad"
+    t0, pd, cd = series.read_data(0)
+    assert t0 == 0.0 and pd["film_pressure"].max() == pytest.approx(1.0)
+    assert pd["displacement"].shape == (points.shape[0], 3) and "von_mises" in cd
+    assert series.read_data(1)[0] == pytest.approx(0.02)
     state = tmp_path / "a" / "state.h5"
     assert state.is_file()
     again = tmp_path / "again.toml"

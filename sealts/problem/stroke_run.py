@@ -16,6 +16,11 @@ monolithic DAE for seal plus film (paper Section 3.1.1, step 3):
 * the rod's axial velocity v(t) (:mod:`sealts.contact.rod_motion`) drives the film; TS
   steps the DAE with adaptive BDF and hits the law's kinks, reversals and output times.
 
+Output: series.csv per accepted step; at t = 0, each of stroke.output_times and t_end the
+profiles (stroke_profiles.csv) and the fields (stroke_fields.xdmf/.h5, a time series:
+displacement and film pressure on nodes, with the long-term material also the Cauchy
+stresses on cells).
+
 Leakage: Q_in enters the film at the pressure side, Q_out leaves it at the atmosphere side
 (Eq. 41); V_in and V_out (Eq. 42) are two more unknowns, dV/dt = Q
 (:class:`sealts.film.seal_film.LeakageTerm`), so TS integrates them with the film and
@@ -258,11 +263,39 @@ def run_stroke(model, u, scene, writer, comm, say):
         say(f"stroke step {k:5d}  t = {t:.5g} s  dt = {ts.getTimeStep():.3g}  "
             f"v = {row['v']:.4g} mm/s  Newton {its}  min h = {row['h_min'] * 1e3:.4g} um")
 
-    def on_stop(t, Ut):
-        writer.profile(t, step.profile(t, Ut), name="stroke_profiles.csv")
+    from ..io.fields import FieldSeries
+    from .seal_run import element_stresses
+    mesh = model.mesh
+    fields = FieldSeries(writer.dir / "stroke_fields.xdmf", mesh.X, mesh.conn, writer.root)
 
-    writer.profile(0.0, step.profile(0.0, U), name="stroke_profiles.csv")
-    U = step.run(U, st.t_end, st.dt, st.rtol, st.output_times, on_step, on_stop)
+    wanted = sorted(set(st.output_times) | {0.0, st.t_end})
+
+    def snapshot(t, Ut):
+        """Profiles and fields at an output time (not at the other TS stops: kinks and
+        reversals of v): displacement and film pressure on nodes; with the long-term
+        material also the stresses on cells."""
+        if not any(abs(t - w) <= 1e-9 * max(1.0, w) for w in wanted):
+            return
+        writer.profile(t, step.profile(t, Ut), name="stroke_profiles.csv")
+        if not writer.root:
+            return
+        u = step.displacement(Ut)
+        disp = np.zeros((mesh.X.shape[0], 3))
+        disp[:, :2] = u[model.udofs]
+        p = np.zeros(mesh.X.shape[0])
+        p[lay.rod_nodes] = Ut[lay.film_dofs]
+        cells = {}
+        if step.viscoelastic is None:
+            sig, mises, pressure = element_stresses(model, u)
+            cells = {"von_mises": mises, "pressure": pressure, "sigma_rr": sig[:, 0],
+                     "sigma_zz": sig[:, 1], "sigma_tt": sig[:, 2], "sigma_rz": sig[:, 3]}
+        fields.add(t, {"displacement": disp, "film_pressure": p}, cells)
+
+    snapshot(0.0, U)
+    try:
+        U = step.run(U, st.t_end, st.dt, st.rtol, st.output_times, on_step, snapshot)
+    finally:
+        fields.close()
     rows = state["rows"]
     v = np.array([r["v"] for r in rows])
     F = np.array([r["friction_total"] for r in rows])
