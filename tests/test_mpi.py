@@ -128,3 +128,33 @@ def test_viscoelastic_hold_on_two_ranks(tmp_path):
         assert b[key] == pytest.approx(a[key], rel=1e-6)
     assert b["pressurised"]["contact_force_total"] == pytest.approx(
         a["pressurised"]["contact_force_total"], rel=1e-6)
+
+
+@pytest.mark.mpi
+@pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
+def test_stroke_on_two_ranks_matches_one(tmp_path):
+    """The coupled stroke (seal + film + friction, still assembled on every rank) on 2 ranks
+    matches 1 rank: a coarse 20 ms ramp to 100 mm/s; leakage, peak friction and min h to
+    1e-6, the same accepted steps."""
+    text = (CONFIGS / "oring_stroke.toml").read_text()
+    text = text.replace("h_contact = 0.05 ", "h_contact = 0.1 ").replace(
+        "h_bulk = 0.2 ", "h_bulk = 0.4 ").replace("[mesh]", f'[mesh]\ncache = "{tmp_path}"')
+    text = text.replace('velocity = "sine"', 'velocity = "ramp-hold"\nt_ramp = 0.01').replace(
+        "v_max = 500.0 ", "v_max = 100.0 ").replace("t_end = 10.0 ", "t_end = 0.02 ").replace(
+        "output_times = [1.0, 2.5, 5.0, 6.0, 7.5]", "output_times = []")
+    assert "t_end = 0.02" in text and "h_contact = 0.1" in text
+    cfg = tmp_path / "stroke.toml"
+    cfg.write_text(text)
+    out = {}
+    for n in (1, 2):
+        cmd = [sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(tmp_path / f"r{n}")]
+        if n > 1:
+            cmd = [MPIEXEC, "-n", str(n)] + cmd
+        r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=600)
+        assert r.returncode == 0, r.stderr
+        out[n] = json.loads((tmp_path / f"r{n}" / "summary.json").read_text())
+    a, b = out[1]["stroke"], out[2]["stroke"]
+    assert out[2]["ranks"] == 2
+    for key in ("leakage_out", "peak_friction_outstroke", "h_min"):
+        assert b[key] == pytest.approx(a[key], rel=1e-6)
+    assert b["steps_accepted"] == a["steps_accepted"]
