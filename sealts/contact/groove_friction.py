@@ -55,7 +55,7 @@ import numpy as np
 
 from ..problem import Term
 from .friction import _as_function, saturation
-from .rigid import softplus_penalty
+from .rigid import corner_arcs, softplus_penalty
 
 WALLS = ("bottom", "wall_pressure_side", "wall_atmosphere_side", "corner_pressure_side",
          "corner_atmosphere_side")
@@ -88,29 +88,20 @@ def groove_surfaces(groove, t, u):
     p[2], d2 = softplus_penalty(zb - z, k, dl)
     dp[2, :, 1] = -d2
     tan[2, :, 0] = 1.0
-    if rho > 0.0:
-        rc = rg - rho
-        for zc, side in ((za + rho, -1.0), (zb - rho, 1.0)):
-            inside = (r > rc) & (side * (z - zc) > 0.0)
-            if side > 0:
-                inside &= ~((r > rc) & (z < za + rho))
-            idx = np.nonzero(inside)[0]
-            dr_, dz_ = r[idx] - rc, z[idx] - zc
-            d = np.maximum(np.hypot(dr_, dz_), 1e-12)
-            nr, nz = dr_ / d, dz_ / d
-            pc, dpc = softplus_penalty(rho - d, k, dl)
-            wall = 1 if side < 0 else 2                 # the side wall the arc replaces
-            p[0, idx], p[wall, idx] = pc, 0.0
-            dp[0, idx, 0], dp[0, idx, 1] = -dpc * nr, -dpc * nz
-            dp[wall, idx] = 0.0
-            tr, tz = -nz, nr
-            tan[0, idx, 0], tan[0, idx, 1] = tr, tz
-            # dt/dx = (R - t n^T) / d, R = [[0, -1], [1, 0]]
-            dtan[0, idx, 0, 0] = -tr * nr / d
-            dtan[0, idx, 0, 1] = (-1.0 - tr * nz) / d
-            dtan[0, idx, 1, 0] = (1.0 - tz * nr) / d
-            dtan[0, idx, 1, 1] = -tz * nz / d
-            region[idx] = wall
+    for side, idx, d, nr, nz in corner_arcs(r, z, rg, za, zb, rho):
+        pc, dpc = softplus_penalty(rho - d, k, dl)
+        wall = 1 if side < 0 else 2                     # the side wall the arc replaces
+        p[0, idx], p[wall, idx] = pc, 0.0
+        dp[0, idx, 0], dp[0, idx, 1] = -dpc * nr, -dpc * nz
+        dp[wall, idx] = 0.0
+        tr, tz = -nz, nr
+        tan[0, idx, 0], tan[0, idx, 1] = tr, tz
+        # dt/dx = (R - t n^T) / d, R = [[0, -1], [1, 0]]
+        dtan[0, idx, 0, 0] = -tr * nr / d
+        dtan[0, idx, 0, 1] = (-1.0 - tr * nz) / d
+        dtan[0, idx, 1, 0] = (1.0 - tz * nr) / d
+        dtan[0, idx, 1, 1] = -tz * nz / d
+        region[idx] = wall
     return p, dp, tan, dtan, region
 
 

@@ -49,6 +49,23 @@ def node_contact_pressure(n_nodes, groove, rod, t, u):
     return pc
 
 
+def corner_arcs(r, z, rg, za, zb, rho):
+    """The nodes in each rounded bottom corner's square (module docstring), for corners a
+    (side -1) and b (side +1): yields (side, node indices, distance d to the arc's centre,
+    unit normal (nr, nz) from the centre). Nothing with rho = 0."""
+    if rho <= 0.0:
+        return
+    rc = rg - rho
+    for zc, side in ((za + rho, -1.0), (zb - rho, 1.0)):
+        inside = (r > rc) & (side * (z - zc) > 0.0)
+        if side > 0:
+            inside &= ~((r > rc) & (z < za + rho))
+        idx = np.nonzero(inside)[0]
+        dr_, dz_ = r[idx] - rc, z[idx] - zc
+        d = np.maximum(np.hypot(dr_, dz_), 1e-12)
+        yield side, idx, d, dr_ / d, dz_ / d
+
+
 def softplus_penalty(g, k, delta):
     """p = k delta ln(1 + exp(-g/delta)) and dp/dg, overflow-safe."""
     x = -g / delta
@@ -131,31 +148,22 @@ class GrooveContact(Term):
         fr_a = np.zeros_like(r)              # radial part from corner a (to the bottom)
         Krr, Krz, Kzz = -dpb, np.zeros_like(r), -dpa - dpz
         pmax = np.maximum(np.maximum(pb, pa), pz)
-        if rho > 0.0:
-            rc = rg - rho
-            for zc, side in ((za + rho, -1.0), (zb - rho, 1.0)):
-                inside = (r > rc) & (side * (z - zc) > 0.0)
-                if side > 0:
-                    inside &= ~((r > rc) & (z < za + rho))
-                dr_, dz_ = r[inside] - rc, z[inside] - zc
-                d = np.maximum(np.hypot(dr_, dz_), 1e-12)
-                nr, nz = dr_ / d, dz_ / d
-                pc, dpc = softplus_penalty(rho - d, k, dl)
-                idx = np.nonzero(inside)[0]
-                fr[idx] = -pc * nr          # the arc pushes the node towards its centre
-                if side < 0:
-                    fa[idx] = -pc * nz       # in place of side wall a (wall b still acts)
-                else:
-                    fb[idx] = -pc * nz
-                pmax[idx] = np.maximum(pc, pz[idx] if side < 0 else pa[idx])
-                # d(p n)/dx = -dp n n^T + p (I - n n^T) / d
-                Krr[idx] = -dpc * nr * nr + pc * (1 - nr * nr) / d
-                Krz[idx] = -dpc * nr * nz - pc * nr * nz / d
-                Kzz[idx] = -dpc * nz * nz + pc * (1 - nz * nz) / d
-                if side < 0:
-                    Kzz[idx] += -dpz[idx]
-                else:
-                    Kzz[idx] += -dpa[idx]
+        for side, idx, d, nr, nz in corner_arcs(r, z, rg, za, zb, rho):
+            pc, dpc = softplus_penalty(rho - d, k, dl)
+            fr[idx] = -pc * nr              # the arc pushes the node towards its centre
+            if side < 0:
+                fa[idx] = -pc * nz           # in place of side wall a (wall b still acts)
+            else:
+                fb[idx] = -pc * nz
+            pmax[idx] = np.maximum(pc, pz[idx] if side < 0 else pa[idx])
+            # d(p n)/dx = -dp n n^T + p (I - n n^T) / d
+            Krr[idx] = -dpc * nr * nr + pc * (1 - nr * nr) / d
+            Krz[idx] = -dpc * nr * nz - pc * nr * nz / d
+            Kzz[idx] = -dpc * nz * nz + pc * (1 - nz * nz) / d
+            if side < 0:
+                Kzz[idx] += -dpz[idx]
+            else:
+                Kzz[idx] += -dpa[idx]
         return pmax, (fr, fa, fb), (Krr, Krz, Kzz)
 
     def node_pressures(self, t, u):
