@@ -84,7 +84,7 @@ p_s = 5 MPa, mu_s = 0.1) is then some 1e4 times the O-ring's own shear stiffness
 """
 import numpy as np
 
-from ..problem import Term
+from ..problem import Term, of_time
 
 
 def saturation(x, blend=0.5):
@@ -99,8 +99,13 @@ def saturation(x, blend=0.5):
     return phi, dphi
 
 
-def _as_function(x):
-    return x if callable(x) else (lambda t, x=float(x): x)
+
+def check_law(gamma_crit, blend):
+    """The elastic-slip law's parameters (ValueError naming the bad one)."""
+    if not 0.0 < blend <= 1.0:
+        raise ValueError(f"blend must lie in (0, 1], got {blend}")
+    if gamma_crit <= 0.0:
+        raise ValueError(f"gamma_crit must be positive, got {gamma_crit}")
 
 
 class RodFriction(Term):
@@ -119,13 +124,10 @@ class RodFriction(Term):
         reaches mu_s p_s (mm); ``blend``: the fraction of gamma_crit over which phi turns
         from stick to slide (0 < blend <= 1); ``anchors``: initial a_i (mm, default 0; see
         :meth:`reset`)."""
-        if not 0.0 < blend <= 1.0:
-            raise ValueError(f"blend must lie in (0, 1], got {blend}")
-        if gamma_crit <= 0.0:
-            raise ValueError(f"gamma_crit must be positive, got {gamma_crit}")
+        check_law(gamma_crit, blend)
         self.contact = c = contact
-        self.s = _as_function(slip)
-        self.mu = _as_function(mu_s)
+        self.s = of_time(slip)
+        self.mu = of_time(mu_s)
         self.gamma_crit, self.blend = float(gamma_crit), float(blend)
         m = c.chain.size
         self.anchors = np.zeros(m) if anchors is None else np.array(anchors, float)

@@ -53,8 +53,8 @@ RodFriction (path-independent within a step, anchors outside the TS error estima
 """
 import numpy as np
 
-from ..problem import Term
-from .friction import _as_function, saturation
+from ..problem import Term, of_time
+from .friction import check_law, saturation
 from .rigid import corner_arcs, softplus_penalty
 
 WALLS = ("bottom", "wall_pressure_side", "wall_atmosphere_side", "corner_pressure_side",
@@ -115,12 +115,9 @@ class GrooveFriction(Term):
         coefficient (number or function of t); ``gamma_crit``, ``blend``: as RodFriction;
         ``anchors``: initial a_i (n, 2) (mm; default 0); ``open_gap``: a slot counts as
         touched in :meth:`update` while the gap is below open_gap * delta."""
-        if not 0.0 < blend <= 1.0:
-            raise ValueError(f"blend must lie in (0, 1], got {blend}")
-        if gamma_crit <= 0.0:
-            raise ValueError(f"gamma_crit must be positive, got {gamma_crit}")
+        check_law(gamma_crit, blend)
         self.groove = g = groove
-        self.mu = _as_function(mu)
+        self.mu = of_time(mu)
         self.gamma_crit, self.blend = float(gamma_crit), float(blend)
         m = g.nodes.size
         self.anchors = np.zeros((m, 2)) if anchors is None else np.array(anchors, float)

@@ -71,7 +71,7 @@ import numba
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
-from ..problem import Term
+from ..problem import Term, of_time
 from .flow_factors import FlowFactors
 from .gap import h_eff
 from .reynolds_fv import conductance, element_fluxes, storage
@@ -87,9 +87,6 @@ def nodal_conductance(h, eta, h_floor, model, par, th, tpp, tps):
                                                                  par, th, tpp, tps)
     return out
 
-
-def _as_function(x):
-    return x if callable(x) else (lambda t, x=float(x): x)
 
 
 class SealFilmTerm(Term):
@@ -131,13 +128,13 @@ class SealFilmTerm(Term):
         if self.pd.shape != (m,):
             raise ValueError("pdofs must give one film-pressure dof per chain node")
         self.R, self.Z = self.X[self.chain, 0], self.X[self.chain, 1]
-        self.r_rod, self.v = r_rod, _as_function(v)
-        self.rod_rate = _as_function(0.0 if rod_rate is None else rod_rate)
+        self.r_rod, self.v = r_rod, of_time(v)
+        self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
         self.eta, self.area, self.h_floor, self.squeeze = eta, area, h_floor, squeeze
         self.ff = FlowFactors.none() if ff is None else ff
         first = pressurised_end == "min_z"
-        self.p_first = _as_function(p_in if first else p_out)
-        self.p_last = _as_function(p_out if first else p_in)
+        self.p_first = of_time(p_in if first else p_out)
+        self.p_last = of_time(p_out if first else p_in)
         self.pressurised_end = pressurised_end
 
         ur, uz, pd = self.ur, self.uz, self.pd

@@ -48,6 +48,11 @@ class SolveError(RuntimeError):
     """A solve that PETSc could not complete (diverged SNES, TS that could not step)."""
 
 
+def of_time(x):
+    """A term's parameter given as a number or as a function of t, as a function of t."""
+    return x if callable(x) else (lambda t, x=float(x): x)
+
+
 class Term:
     """Interface of a physics term (see module docstring)."""
 
