@@ -140,6 +140,10 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[stroke]\nvelocity = 'table'\ntable = 'nope.csv'\n", "stroke.table: no such file"),
     ("[stroke]\nvelocity = 'sine'\ntable = 'v.csv'\n", "stroke.table is only used with"),
     ("[stroke]\nvelocity = 'sinus'\n", "stroke.velocity must be one of"),
+    ("[start]\nstate = 'nope.h5'\n", "start.state: no such file"),
+    ("[fluid]\np_crit = -0.1\n", "fluid.p_crit must be >= 0 MPa"),
+    ("[groove]\nmu = -0.1\n", "groove.mu must be >= 0"),
+    ("[stroke]\nvelocity = 'sine'\ngamma_crit = 0.0\n", "stroke.gamma_crit must be > 0 mm"),
     ("[stroke]\nvelocity = 'sine'\n[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\n"
      "[fluid]\np_in = 1.0\n", "a scene runs either the stroke or the pressure hold"),
 ])

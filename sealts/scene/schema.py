@@ -265,10 +265,8 @@ def _check_seal_geometry(s, base):
         if not sl.mesh_file:
             raise SceneError("seal.mesh_file must name a .msh or .geo file with "
                              "seal.shape = 'file'")
-        path = Path(sl.mesh_file) if Path(sl.mesh_file).is_absolute() else base / sl.mesh_file
-        if not path.is_file():
-            raise SceneError(f"seal.mesh_file: no such file {path}")
-        if path.suffix not in (".msh", ".geo"):
+        _check_file("seal.mesh_file", sl.mesh_file, base)
+        if Path(sl.mesh_file).suffix not in (".msh", ".geo"):
             raise SceneError(f"seal.mesh_file = {sl.mesh_file}: must be a .msh or .geo file")
         return   # the rest is checked on the mesh itself (sealts.problem.seal_run)
     if sl.mesh_file:
@@ -329,6 +327,19 @@ def _check_viscoelastic(s):
                              f"{ve.t_min:g} s must lie below hold.t_end = {hold.t_end:g} s")
 
 
+def _check_file(key, name, base, reader=None):
+    """A file named by a scene key (relative to the scene's directory) exists and, with a
+    ``reader``, reads (its ValueError becomes the one-line error)."""
+    path = Path(name) if Path(name).is_absolute() else base / name
+    if not path.is_file():
+        raise SceneError(f"{key}: no such file {path}")
+    if reader is not None:
+        try:
+            reader(path)
+        except ValueError as e:
+            raise SceneError(f"{key}: {e}") from None
+
+
 def _check_stroke(s, base):
     st = s.stroke
     if st.velocity == "none":
@@ -346,13 +357,7 @@ def _check_stroke(s, base):
         from ..contact.rod_motion import read_velocity_table
         if not st.table:
             raise SceneError("stroke.table must name a CSV file with stroke.velocity = 'table'")
-        path = Path(st.table) if Path(st.table).is_absolute() else base / st.table
-        if not path.is_file():
-            raise SceneError(f"stroke.table: no such file {path}")
-        try:
-            read_velocity_table(path)
-        except ValueError as e:
-            raise SceneError(f"stroke.table: {e}") from None
+        _check_file("stroke.table", st.table, base, read_velocity_table)
     elif st.table:
         raise SceneError(f"stroke.table is only used with stroke.velocity = 'table' "
                          f"(velocity is {st.velocity!r})")
@@ -372,10 +377,7 @@ def _check_consistency(s, base):
         _check_viscoelastic(s)
         _check_stroke(s, base)
         if s.start.state:
-            path = Path(s.start.state) if Path(s.start.state).is_absolute() \
-                else base / s.start.state
-            if not path.is_file():
-                raise SceneError(f"start.state: no such file {path}")
+            _check_file("start.state", s.start.state, base)
         return
     a, g, f = s.analysis, s.gap, s.film
     if a.type == "transient":
@@ -401,13 +403,7 @@ def _check_consistency(s, base):
     if f.flow_factors == "table":
         if not f.table:
             raise SceneError("film.table must name a CSV file with film.flow_factors = 'table'")
-        path = Path(f.table) if Path(f.table).is_absolute() else base / f.table
-        if not path.is_file():
-            raise SceneError(f"film.table: no such file {path}")
-        try:
-            read_table(path)
-        except ValueError as e:
-            raise SceneError(f"film.table: {e}") from None
+        _check_file("film.table", f.table, base, read_table)
 
 
 def parse_scene(text, source="<string>", base=None):
@@ -427,18 +423,16 @@ def scene_from_table(table, source="<table>", base=None):
     scene = build(Scene, table)
     base = Path(base) if base is not None else Path.cwd()
     _check_consistency(scene, base)
-    film = scene.film
-    if film.table and not Path(film.table).is_absolute():
-        film = replace(film, table=str((base / film.table).resolve()))
-    seal = scene.seal
-    if seal.mesh_file and not Path(seal.mesh_file).is_absolute():
-        seal = replace(seal, mesh_file=str((base / seal.mesh_file).resolve()))
-    stroke = scene.stroke
-    if stroke.table and not Path(stroke.table).is_absolute():
-        stroke = replace(stroke, table=str((base / stroke.table).resolve()))
-    start = scene.start
-    if start.state and not Path(start.state).is_absolute():
-        start = replace(start, state=str((base / start.state).resolve()))
+
+    def resolved(section, key):
+        """The section with its file key made absolute (relative to the scene's dir)."""
+        name = getattr(section, key)
+        if not name or Path(name).is_absolute():
+            return section
+        return replace(section, **{key: str((base / name).resolve())})
+
+    film, seal = resolved(scene.film, "table"), resolved(scene.seal, "mesh_file")
+    stroke, start = resolved(scene.stroke, "table"), resolved(scene.start, "state")
     return replace(scene, petsc=petsc, source=source, film=film, seal=seal, stroke=stroke,
                    start=start)
 
