@@ -52,6 +52,16 @@ def test_two_ranks_match_one(tmp_path, scene, opts):
     assert s2["steps_accepted"] == s1["steps_accepted"]
 
 
+def _summary(n, cfg, out, timeout=600):
+    """summary.json of ``sealts run cfg`` on n ranks."""
+    cmd = [sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(out)]
+    if n > 1:
+        cmd = [MPIEXEC, "-n", str(n)] + cmd
+    r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
+    assert r.returncode == 0, r.stderr
+    return json.loads((out / "summary.json").read_text())
+
+
 @pytest.mark.mpi
 @pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
 def test_user_error_under_mpi_exits_on_every_rank(tmp_path):
@@ -77,14 +87,7 @@ def test_mounted_and_pressurised_seal_on_two_ranks(tmp_path):
         "grading_distance = 0.5", f'grading_distance = 0.5\ncache = "{tmp_path}"')
     cfg = tmp_path / "coarse.toml"
     cfg.write_text(text)
-    out = {}
-    for n in (1, 2):
-        cmd = [sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(tmp_path / f"r{n}")]
-        if n > 1:
-            cmd = [MPIEXEC, "-n", str(n)] + cmd
-        r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=600)
-        assert r.returncode == 0, r.stderr
-        out[n] = json.loads((tmp_path / f"r{n}" / "summary.json").read_text())
+    out = {n: _summary(n, cfg, tmp_path / f"r{n}") for n in (1, 2)}
     a, b = out[1]["results"], out[2]["results"]
     assert out[2]["ranks"] == 2
     cells = out[2]["cells_per_rank"]
@@ -112,14 +115,7 @@ def test_viscoelastic_hold_on_two_ranks(tmp_path):
         assert edit in text, edit   # the scene file changed: keep this run short
     cfg = tmp_path / "hold.toml"
     cfg.write_text(text)
-    out = {}
-    for n in (1, 2):
-        cmd = [sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(tmp_path / f"r{n}")]
-        if n > 1:
-            cmd = [MPIEXEC, "-n", str(n)] + cmd
-        r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=900)
-        assert r.returncode == 0, r.stderr
-        out[n] = json.loads((tmp_path / f"r{n}" / "summary.json").read_text())
+    out = {n: _summary(n, cfg, tmp_path / f"r{n}", timeout=900) for n in (1, 2)}
     assert min(out[2]["cells_per_rank"]) > 0
     a, b = out[1]["results"], out[2]["results"]
     assert out[2]["hold"]["unknowns"] == out[1]["hold"]["unknowns"]
@@ -145,14 +141,7 @@ def test_stroke_on_two_ranks_matches_one(tmp_path):
     assert "t_end = 0.02" in text and "h_contact = 0.1" in text
     cfg = tmp_path / "stroke.toml"
     cfg.write_text(text)
-    out = {}
-    for n in (1, 2):
-        cmd = [sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(tmp_path / f"r{n}")]
-        if n > 1:
-            cmd = [MPIEXEC, "-n", str(n)] + cmd
-        r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=600)
-        assert r.returncode == 0, r.stderr
-        out[n] = json.loads((tmp_path / f"r{n}" / "summary.json").read_text())
+    out = {n: _summary(n, cfg, tmp_path / f"r{n}") for n in (1, 2)}
     a, b = out[1]["stroke"], out[2]["stroke"]
     assert out[2]["ranks"] == 2
     for key in ("leakage_out", "peak_friction_outstroke", "h_min"):
