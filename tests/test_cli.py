@@ -16,9 +16,9 @@ def sealts(*args):
                           text=True, cwd=ROOT)
 
 
-def test_default_run_writes_the_output_contract(tmp_path):
+def test_slider_run_writes_the_output_contract(tmp_path):
     out = tmp_path / "out"
-    r = sealts("run", "-o", str(out))
+    r = sealts("run", str(CONFIGS / "slider.toml"), "-o", str(out))
     assert r.returncode == 0, r.stderr
     summary = json.loads((out / "summary.json").read_text())
     res = summary["results_t0"]

@@ -54,11 +54,17 @@ def test_shipped_configs_are_valid():
         load_scene(path)
 
 
-def test_embedded_default_is_the_slider_config():
+def test_embedded_default_is_the_oring_cycle_config():
+    """`sealts run` without a scene runs the paper's O-ring cycle: the packaged copy must be
+    the shipped config, byte for byte, so the two cannot drift apart."""
     import dataclasses
+    from importlib import resources
     a = default_scene()
-    b = load_scene(CONFIGS / "slider.toml")
+    b = load_scene(CONFIGS / "oring_stroke.toml")
     assert dataclasses.replace(a, source="") == dataclasses.replace(b, source="")
+    packaged = resources.files("sealts.data").joinpath("oring_stroke.toml").read_text()
+    assert packaged == (CONFIGS / "oring_stroke.toml").read_text()
+    assert a.model == "seal" and a.stroke.velocity == "sine" and a.stroke.v_max == 500.0
 
 
 def test_petsc_table_values_become_option_strings():

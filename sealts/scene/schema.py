@@ -452,6 +452,7 @@ def load_scene(path):
 
 
 def default_scene():
-    """The embedded default scene (the paper's slider bearing until the O-ring exists)."""
-    text = resources.files("sealts.data").joinpath("slider.toml").read_text()
-    return parse_scene(text, source="<embedded slider>")
+    """The embedded default scene: the paper's O-ring cycle, a copy of
+    ``configs/oring_stroke.toml`` (tests/test_scene.py keeps the two identical)."""
+    text = resources.files("sealts.data").joinpath("oring_stroke.toml").read_text()
+    return parse_scene(text, source="<embedded oring_stroke>")
