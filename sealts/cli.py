@@ -97,9 +97,10 @@ def run(args, command="run"):
         writer.close()
     if comm.getRank() == 0 and scene.output.progress and "stroke" in summary:
         st = summary["stroke"]
-        print(f"{scene.name}: leakage {st['leakage_out']:.4g} mm^3 out at the atmosphere side "
-              f"(outstroke {st['outstroke_transport']:.4g}, instroke "
-              f"{st['instroke_transport']:.4g}); peak friction {st['peak_friction_outstroke']:.4g}"
+        leak = (f"leakage {st['leakage_out']:.4g} mm^3 out at the atmosphere side (outstroke "
+                f"{st['outstroke_transport']:.4g}, instroke {st['instroke_transport']:.4g})"
+                if st["film"] else "dry stroke (no film)")
+        print(f"{scene.name}: {leak}; peak friction {st['peak_friction_outstroke']:.4g}"
               f" N out, {st['peak_friction_instroke']:.4g} N in; min h "
               f"{st['h_min'] * 1e3:.4g} um  ({summary['wall_time_s']:.1f} s wall)")
         print(f"written: {out}/summary.json, series.csv, stroke_profiles.csv, "

@@ -42,6 +42,9 @@ increments by the sign of v.
   long-term material, then every H_i = S_iso(u) and the frozen terms' stress is set there
   (paper step 3).
 
+* dry (``stroke.film = false``): no film and no leakage unknowns; the rod side keeps the
+  pressure penetration of step 2, and the asperity contact carries the rod's whole load.
+
 Not yet in the stroke: updating the pressure penetration front during the stroke.
 """
 import time
@@ -73,7 +76,8 @@ class StrokeStep:
             from .hold_run import ViscoelasticSolid
             self.viscoelastic = ves = ViscoelasticSolid(model, ve, scene.stroke.t_end)
         prony_size = self.viscoelastic.prony_size if self.viscoelastic else 0
-        self.layout = lay = Layout(mesh, film=True, prony=prony_size)
+        wet = scene.stroke.film
+        self.layout = lay = Layout(mesh, film=wet, prony=prony_size)
         ud = lay.udofs
         axisym = model.axisym
         self.prony = None
@@ -81,7 +85,7 @@ class StrokeStep:
             self.solid, self.prony, H0 = ves.terms(lay, u0)
         else:
             self.solid = SolidTerm(X, mesh.conn, model.material, axisym, udofs=ud)
-        chain = lay.rod_nodes
+        chain = mesh.chain("rod_side")
         a = scene.asperity
         self.rod = RodContact(X, chain, lambda t: model.r_rod_final, model.rod.area,
                               a.h_mix, a.p_mix, udofs=ud)
@@ -91,15 +95,20 @@ class StrokeStep:
                                     g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
                                     corner_radius=g.rho)
         fl, fm = scene.fluid, scene.film
-        self.film = SealFilmTerm(X, chain, lay.film_dofs, lambda t: model.r_rod_final,
-                                 self.motion.v, fl.viscosity, fl.p_in, fl.p_out,
-                                 model.rod.area, ff=flow_factors_of(fm), h_floor=fm.h_floor,
-                                 squeeze=fm.squeeze, pressurised_end="min_z", udofs=ud,
-                                 surface_normal=True, shear=True, beta=fm.beta)
-        self.vdofs = np.array([lay.n, lay.n + 1])
-        self.leakage = LeakageTerm(self.film, self.vdofs)
-        self.n = lay.n + 2
-        terms = [self.solid, self.rod, self.groove, self.film, self.leakage]
+        self.film = self.leakage = None
+        self.vdofs = np.zeros(0, np.int64)
+        terms = [self.solid, self.rod, self.groove]
+        if wet:
+            self.film = SealFilmTerm(X, chain, lay.film_dofs, lambda t: model.r_rod_final,
+                                     self.motion.v, fl.viscosity, fl.p_in, fl.p_out,
+                                     model.rod.area, ff=flow_factors_of(fm),
+                                     h_floor=fm.h_floor, squeeze=fm.squeeze,
+                                     pressurised_end="min_z", udofs=ud, surface_normal=True,
+                                     shear=True, beta=fm.beta)
+            self.vdofs = np.array([lay.n, lay.n + 1])
+            self.leakage = LeakageTerm(self.film, self.vdofs)
+            terms += [self.film, self.leakage]
+        self.n = lay.n + self.vdofs.size
         if self.prony is not None:
             terms.insert(1, self.prony)
         self.friction = self.groove_friction = None
@@ -114,11 +123,11 @@ class StrokeStep:
         self.load = None
         old = getattr(model, "load", None)
         if old is not None:
-            # step 2's wetting, without the rod side (the film's)
+            # step 2's wetting, without the rod side when the film carries it
             self.load = PressureLoad(X, mesh.conn, lambda t: fl.p_in, axisym,
                                      old.edges[old.start, 0], udofs=ud, p_crit=old.p_crit)
-            rod_edges = {tuple(sorted(e)) for e in mesh.edges["rod_side"]}
-            on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges])
+            rod_edges = {tuple(sorted(e)) for e in mesh.edges["rod_side"]} if wet else set()
+            on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges], bool)
             self.load.s0 = np.where(on_rod, 0.0, old.s0)
             self.load.s1 = np.where(on_rod, 0.0, old.s1)
             terms.append(self.load)
@@ -137,13 +146,15 @@ class StrokeStep:
         """Film pressures with the seal held, then seal and film in equilibrium at t = 0."""
         lay, comm, n = self.layout, self.problem.comm, self.n
         U = self.U0.copy()
-        U[lay.film_dofs] = np.linspace(self.scene.fluid.p_in, self.scene.fluid.p_out,
-                                       lay.film_dofs.size)
-        held = np.concatenate([lay.udofs.ravel(), self.vdofs]
-                              + ([lay.prony_dofs.ravel()] if self.prony is not None else []))
-        U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
-                    prefix="stroke_film_").solve_steady(U, 0.0)
-        self.film.set_row_scale(0.0, U)
+        if self.film is not None:
+            U[lay.film_dofs] = np.linspace(self.scene.fluid.p_in, self.scene.fluid.p_out,
+                                           lay.film_dofs.size)
+            held = np.concatenate([lay.udofs.ravel(), self.vdofs]
+                                  + ([lay.prony_dofs.ravel()] if self.prony is not None
+                                     else []))
+            U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
+                        prefix="stroke_film_").solve_steady(U, 0.0)
+            self.film.set_row_scale(0.0, U)
         for fr in self.frictions:
             fr.reset(0.0, U)                       # no elastic slip in the pressurised state
         # the long-term equilibrium with the film (the paper's step 2 ends with the
@@ -186,35 +197,44 @@ class StrokeStep:
         """Along the rod side: y (mm), h (mm), film pressure p and asperity pressure (MPa),
         fluid shear tau and solid friction stress tau_solid (MPa, +y on the seal); the names
         of the film-only scenes' profiles."""
-        f = self.film
-        y, h, _, p = f.film(t, U, Udot)
-        p_asp, _ = self.rod.pressure(t, U)
-        tau = f.shear_forces(t, U, Udot) / (f.area * f.lengths(y))
+        f, rod = self.film, self.rod
+        y = rod.X[rod.chain, 1] + U[rod.uz]
+        h = rod.gap(t, U)
+        p_asp, _ = rod.pressure(t, U)
+        p = tau = np.zeros_like(h)
+        if f is not None:
+            p = f.pressure(U)
+            tau = f.shear_forces(t, U, Udot) / (f.area * f.lengths(y))
         tau_s = (self.friction.stress(t, U) if self.friction is not None
                  else np.zeros_like(tau))
         return {"y": y, "h": h, "p": p, "p_asperity": p_asp, "tau": tau, "tau_solid": tau_s}
 
     def scalars(self, t, U, Udot=None):
-        """Forces on the seal (N): fluid shear (+y), radial film and asperity loads, flows."""
-        f = self.film
-        q_in, q_out = self.leakage.flows(t, U, Udot)
-        h = self.rod.gap(t, U)
-        y = f.film(t, U)[0]
-        touching = h < self.rod.h_mix
+        """Forces on the seal (N): fluid shear (+y), radial film and asperity loads, flows
+        (zero without the film)."""
+        f, rod = self.film, self.rod
+        h = rod.gap(t, U)
+        y = rod.X[rod.chain, 1] + U[rod.uz]
+        touching = h < rod.h_mix
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
-        shear = float(f.shear_forces(t, U, Udot).sum())
+        q_in = q_out = shear = load_fluid = p_max = 0.0
+        volumes = np.zeros(2)
+        if f is not None:
+            q_in, q_out = self.leakage.flows(t, U, Udot)
+            shear = float(f.shear_forces(t, U, Udot).sum())
+            load_fluid = float(f.forces(t, U).sum())
+            volumes = U[self.vdofs]
+            p_max = float(f.pressure(U).max())
+        load_asperity = float(rod.forces(t, U).sum())
         solid = float(self.friction.total(t, U)) if self.friction is not None else 0.0
         gf = self.groove_friction
         groove = gf.axial(t, U) if gf is not None else 0.0
         return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
                 "friction_total": shear + solid, "friction_groove": groove,
-                "normal_load": float(f.forces(t, U).sum() + self.rod.forces(t, U).sum()),
-                "load_fluid": float(f.forces(t, U).sum()),
-                "load_asperity": float(self.rod.forces(t, U).sum()),
-                "Q_in": q_in, "Q_out": q_out, "V_in": float(U[self.vdofs[0]]),
-                "V_out": float(U[self.vdofs[1]]), "h_min": float(h.min()),
-                "asperity_contact_length": length,
-                "p_fluid_max": float(U[self.layout.film_dofs].max())}
+                "normal_load": load_fluid + load_asperity, "load_fluid": load_fluid,
+                "load_asperity": load_asperity, "Q_in": q_in, "Q_out": q_out,
+                "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
+                "asperity_contact_length": length, "p_fluid_max": p_max}
 
     def run(self, U0, t_end, dt0, rtol, output_times=(), on_step=None, on_stop=None):
         m = self.motion
@@ -283,7 +303,7 @@ def run_stroke(model, u, scene, writer, comm, say):
         disp = np.zeros((mesh.X.shape[0], 3))
         disp[:, :2] = u[model.udofs]
         p = np.zeros(mesh.X.shape[0])
-        p[lay.rod_nodes] = Ut[lay.film_dofs]
+        p[lay.rod_nodes] = Ut[lay.film_dofs]          # none without the film
         cells = {}
         if step.viscoelastic is None:
             sig, mises, pressure = element_stresses(model, u)
@@ -303,7 +323,8 @@ def run_stroke(model, u, scene, writer, comm, say):
     info = {
         "velocity": st.velocity, "v_max": st.v_max, "t_end": st.t_end,
         "unknowns": int(step.n),
-        "leakage_in": float(U[step.vdofs[0]]), "leakage_out": float(U[step.vdofs[1]]),
+        "film": step.film is not None,
+        "leakage_in": rows[-1]["V_in"], "leakage_out": rows[-1]["V_out"],
         "outstroke_transport": state["transport"][1],
         "instroke_transport": state["transport"][-1],
         "peak_friction_outstroke": float(np.abs(F[v > 0]).max()) if (v > 0).any() else 0.0,

@@ -189,6 +189,8 @@ class Stroke:
                                        doc="times of profile output; t_end is always written")
     friction: bool = option(True, doc="solid friction: mu_s p_s on the rod (Eq. 46-48) "
                                       "and groove.mu on the groove walls")
+    film: bool = option(True, doc="the Reynolds film on the rod side (false: dry contact, "
+                                  "no film or leakage unknowns)")
     gamma_crit: float = option(1e-4, unit="mm", gt=0.0,
                                doc="elastic slip at which solid friction reaches mu_s p_s")
 

@@ -1,0 +1,41 @@
+"""The stroke without the film (``stroke.film = false``): dry sliding contact."""
+import numpy as np
+import pytest
+
+from conftest import scene
+from sealts.problem.seal_run import model_from_scene
+from sealts.problem.stroke_run import StrokeStep
+
+
+def test_dry_stroke_slides_at_the_coulomb_limit_with_no_film_unknowns(tmp_path):
+    """A switched-off film adds no unknowns: the DAE is the displacements alone (2 per
+    node). The coarse pressurised O-ring dragged at 100 mm/s by a dry rod: once the rod has
+    slid (5 mm of travel at the end against a stick range of microns), the rod's friction is
+    the Coulomb limit mu_s times the asperity load (Eq. 46-48), the asperity contact carries
+    the whole normal load, and the rod side keeps step 2's pressure penetration (the load
+    at the start equals the pressurised rod force)."""
+    s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
+              stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
+                      "t_end": 0.05, "output_times": [], "film": False})
+    model = model_from_scene(s)
+    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
+    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
+                         dt0=s.mount.dt)
+    rod_force = model.results(2 * s.mount.t_hold, u)["contact_force_total"]
+    step = StrokeStep(model, u, s)
+    assert step.film is None and step.leakage is None
+    assert step.n == 2 * model.mesh.X.shape[0]
+    U0 = step.start()
+    start = step.scalars(0.0, U0)
+    assert start["load_fluid"] == 0.0 and start["Q_out"] == 0.0
+    assert start["load_asperity"] == pytest.approx(rod_force, rel=1e-3)
+
+    def on_step(ts, k, t, Ut):
+        step.accepted(t, Ut)
+
+    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, on_step=on_step)
+    end = step.scalars(s.stroke.t_end, U)
+    assert end["friction_solid"] == pytest.approx(s.asperity.mu_s * end["load_asperity"],
+                                                  rel=1e-6)
+    assert end["friction_total"] == end["friction_solid"] > 50.0
+    assert np.all(step.profile(s.stroke.t_end, U)["p"] == 0.0)
