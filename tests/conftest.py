@@ -24,6 +24,75 @@ def scene(name, **sections):
     return scene_from_table(table, f"{name}.toml (test)", CONFIGS)
 
 
+def _toml_value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return f'"{v}"'
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    return repr(v)
+
+
+def config_text(name, **sections):
+    """The text of configs/NAME.toml with keys set per section, for tests that run the CLI:
+    config_text("oring_stroke", mesh={"h_contact": 0.1}). A key's line in its section is
+    replaced (its comment dropped), a missing key is added under the section's header, a
+    missing section at the end. Edits by key, so a changed value in the shipped file cannot
+    silently escape a test's coarsening."""
+    lines = (CONFIGS / f"{name}.toml").read_text().splitlines()
+    todo = {sec: dict(values) for sec, values in sections.items()}
+    out, sec = [], None
+    for line in lines:
+        head = line.strip()
+        if head.startswith("[") and head.endswith("]") and not head.startswith("[["):
+            sec = head[1:-1].strip()
+            out.append(line)
+            out += [f"{k} = {_toml_value(v)}" for k, v in todo.get(sec, {}).items()
+                    if not any(ln.split("=")[0].strip() == k for ln in _section(lines, sec))]
+            continue
+        key = head.split("=")[0].strip() if "=" in head and not head.startswith("#") else None
+        if sec in todo and key in todo[sec]:
+            out.append(f"{key} = {_toml_value(todo[sec][key])}")
+        else:
+            out.append(line)
+    present = {ln.strip()[1:-1].strip() for ln in lines if ln.strip().startswith("[")}
+    for sec, values in todo.items():
+        if sec not in present:
+            out += ["", f"[{sec}]"] + [f"{k} = {_toml_value(v)}" for k, v in values.items()]
+    return "\n".join(out) + "\n"
+
+
+def _section(lines, name):
+    """The lines of section [name]."""
+    inside = False
+    for line in lines:
+        head = line.strip()
+        if head.startswith("[") and head.endswith("]"):
+            inside = head[1:-1].strip() == name
+            continue
+        if inside:
+            yield line
+
+
+def mount_and_pressurise(s):
+    """Steps 1-2 of a seal scene: mounted, then pressurised to fluid.p_in. (model, u)."""
+    from sealts.problem.seal_run import model_from_scene
+    model = model_from_scene(s)
+    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
+    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
+                         dt0=s.mount.dt, p_crit=s.fluid.p_crit)
+    return model, u
+
+
+def coarse_stroke(cache, **stroke):
+    """The coarse O-ring (0.1/0.4 mm) of configs/oring_stroke.toml at 1 MPa, the rod ramped
+    to 100 mm/s outstroke in 10 ms and held to 30 ms; ``stroke`` overrides those keys."""
+    return scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(cache)},
+                 stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
+                         "t_end": 0.03, "output_times": [], **stroke})
+
+
 @pytest.fixture
 def make_scene():
     return scene

@@ -2,8 +2,7 @@
 import numpy as np
 import pytest
 
-from conftest import scene
-from sealts.problem.seal_run import model_from_scene
+from conftest import coarse_stroke, mount_and_pressurise
 from sealts.problem.stroke_run import StrokeStep
 
 
@@ -14,13 +13,8 @@ def test_dry_stroke_slides_at_the_coulomb_limit_with_no_film_unknowns(tmp_path):
     the Coulomb limit mu_s times the asperity load (Eq. 46-48), the asperity contact carries
     the whole normal load, and the rod side keeps step 2's pressure penetration (the load
     at the start equals the pressurised rod force)."""
-    s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
-              stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
-                      "t_end": 0.05, "output_times": [], "film": False})
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
-                         dt0=s.mount.dt)
+    s = coarse_stroke(tmp_path, t_end=0.05, film=False)
+    model, u = mount_and_pressurise(s)
     rod_force = model.results(2 * s.mount.t_hold, u)["contact_force_total"]
     step = StrokeStep(model, u, s)
     assert step.film is None and step.leakage is None

@@ -195,19 +195,13 @@ def stroke_with_friction(tmp_path_factory):
     """The coarse O-ring at 1 MPa (as the fixture of tests/test_stroke.py) with friction on
     the rod and the groove walls: the rod ramps to 100 mm/s outstroke in 10 ms and holds to
     30 ms (2.5 mm of travel)."""
-    from conftest import scene
-    from sealts.problem.seal_run import model_from_scene
+    from conftest import coarse_stroke, mount_and_pressurise
     from sealts.problem.stroke_run import StrokeStep
 
     cache = str(tmp_path_factory.mktemp("mesh"))
-    s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": cache},
-              stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
-                      "t_end": 0.03, "output_times": [], "friction": True})
+    s = coarse_stroke(cache, friction=True)
     assert s.groove.mu == 0.1 and s.asperity.mu_s == 0.1
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
-                         dt0=s.mount.dt)
+    model, u = mount_and_pressurise(s)
     step = StrokeStep(model, u, s)
     assert step.friction is not None and step.groove_friction is not None
     U0 = step.start()

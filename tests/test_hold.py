@@ -8,9 +8,8 @@ import sys
 import numpy as np
 import pytest
 
-from conftest import CONFIGS, scene
+from conftest import config_text, mount_and_pressurise, scene
 from sealts.problem.hold_run import HoldStep
-from sealts.problem.seal_run import model_from_scene
 
 # a coarse O-ring and two Prony terms (both active over [1e-3 s, 1e3 s]) keep this quick
 SMALL = dict(mesh={"h_contact": 0.1, "h_bulk": 0.4},
@@ -23,10 +22,7 @@ SMALL = dict(mesh={"h_contact": 0.1, "h_bulk": 0.4},
 def pressurised(tmp_path_factory):
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = scene("oring_hold", **{**SMALL, "mesh": {**SMALL["mesh"], "cache": cache}})
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
-                         dt0=s.mount.dt)
+    model, u = mount_and_pressurise(s)
     return s, model, u
 
 
@@ -53,12 +49,8 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
     exact Schur complement (one Krylov iteration per Newton step); the seal creeps after the
     step; steps grow by decades; outputs are written."""
     cfg = tmp_path / "hold.toml"
-    text = (CONFIGS / "oring_hold.toml").read_text()
-    text = text.replace('prony = "table2"', 'prony = "custom"\nprony_g = [0.5, 0.3]\n'
-                        'prony_tau = [0.01, 1.0]').replace("t_min = 1e-4", "t_min = 1e-3")
-    text = text.replace("t_end = 1e6 ", "t_end = 1e3 ").replace("h_contact = 0.05",
-                                                               "h_contact = 0.1")
-    text = text.replace("h_bulk = 0.2", "h_bulk = 0.4")
+    text = config_text("oring_hold", mesh=SMALL["mesh"], viscoelastic=SMALL["viscoelastic"],
+                       hold={"t_end": 1e3})
     cfg.write_text(text)
     out = tmp_path / "out"
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(out)],

@@ -72,18 +72,17 @@ def test_cli_ihl_on_the_pressurised_oring(tmp_path):
     import subprocess
     import sys
 
-    from conftest import CONFIGS
-    text = (CONFIGS / "oring_pressurise.toml").read_text()
-    text = text.replace("h_contact = 0.01 ", "h_contact = 0.1 ").replace(
-        "h_bulk = 0.05 ", "h_bulk = 0.4 ").replace(
-        "grading_distance = 0.5", f'grading_distance = 0.5\ncache = "{tmp_path}"')
+    from conftest import config_text
+    text = config_text("oring_pressurise",
+                       mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)})
     still = tmp_path / "still.toml"
     still.write_text(text)
     r = subprocess.run([sys.executable, "-m", "sealts", "ihl", str(still), "-o",
                         str(tmp_path / "x")], capture_output=True, text=True)
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "rod.velocity" in r.stderr
     cfg = tmp_path / "ihl.toml"
-    cfg.write_text(text.replace("[rod]", "[rod]\nvelocity = 100.0"))
+    cfg.write_text(config_text("oring_pressurise", rod={"velocity": 100.0},
+                               mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)}))
     out = tmp_path / "out"
     r = subprocess.run([sys.executable, "-m", "sealts", "ihl", str(cfg), "-o", str(out)],
                        capture_output=True, text=True, timeout=600)

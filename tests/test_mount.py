@@ -7,7 +7,7 @@ import h5py
 import numpy as np
 import pytest
 
-from conftest import CONFIGS, ROOT, scene
+from conftest import ROOT, config_text, scene
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
 from sealts.mesh.seal_mesh import ORing, build_mesh
 from sealts.problem import Problem
@@ -331,10 +331,8 @@ def test_oring_still_seals_at_5_mpa(tmp_path):
 
 def test_cli_mount_writes_fields_profile_and_summary(tmp_path):
     cfg = tmp_path / "m.toml"
-    text = (CONFIGS / "oring_mount.toml").read_text()
-    text = text.replace("h_contact = 0.01 ", "h_contact = 0.1 ").replace(
-        "h_bulk = 0.05 ", "h_bulk = 0.4 ").replace('grading_distance = 0.5',
-                                                   f'grading_distance = 0.5\ncache = "{tmp_path}"')
+    text = config_text("oring_mount",
+                       mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)})
     cfg.write_text(text)
     out = tmp_path / "out"
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(out)],

@@ -2,8 +2,7 @@
 import numpy as np
 import pytest
 
-from conftest import scene
-from sealts.problem.seal_run import model_from_scene
+from conftest import coarse_stroke, mount_and_pressurise
 from sealts.problem.stroke_run import StrokeStep
 
 
@@ -12,13 +11,8 @@ def stroke(tmp_path_factory):
     """The coarse O-ring at 1 MPa; the rod ramps to 100 mm/s outstroke in 10 ms and holds
     to 30 ms; no solid friction (tests/test_groove_friction.py runs it with friction)."""
     cache = str(tmp_path_factory.mktemp("mesh"))
-    s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": cache},
-              stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
-                      "t_end": 0.03, "output_times": [], "friction": False})
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
-                         dt0=s.mount.dt)
+    s = coarse_stroke(cache, friction=False)
+    model, u = mount_and_pressurise(s)
     step = StrokeStep(model, u, s)
     U0 = step.start()
     states = []
@@ -106,13 +100,10 @@ def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
     import subprocess
     import sys
 
-    from conftest import CONFIGS
-    text = (CONFIGS / "oring_stroke.toml").read_text()
-    text = text.replace("h_contact = 0.05 ", "h_contact = 0.1 ").replace(
-        "h_bulk = 0.2 ", "h_bulk = 0.4 ").replace("[mesh]", f'[mesh]\ncache = "{tmp_path}"')
-    text = text.replace('velocity = "sine"', 'velocity = "ramp-hold"\nt_ramp = 0.01').replace(
-        "t_end = 10.0 ", "t_end = 0.02 ").replace("output_times = [1.0, 2.5, 5.0, 6.0, 7.5]",
-                                                 "output_times = []")
+    from conftest import config_text
+    mesh = {"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)}
+    stroke = {"velocity": "ramp-hold", "t_ramp": 0.01, "t_end": 0.02, "output_times": []}
+    text = config_text("oring_stroke", mesh=mesh, stroke=stroke)
     first = tmp_path / "first.toml"
     first.write_text(text)
 
@@ -146,7 +137,8 @@ def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
         assert b["stroke"][key] == pytest.approx(a["stroke"][key], rel=1e-9, abs=1e-12)
     assert b["stroke"]["steps_accepted"] == a["stroke"]["steps_accepted"]
     other = tmp_path / "other.toml"
-    other.write_text(again.read_text().replace("h_contact = 0.1 ", "h_contact = 0.2 "))
+    other.write_text(config_text("oring_stroke", mesh={**mesh, "h_contact": 0.2}, stroke=stroke,
+                                 start={"state": str(state)}))
     r, _ = run(other, tmp_path / "c")
     assert r.returncode == 2 and r.stderr.count("\n") == 1
     assert "start.state" in r.stderr and "another mesh" in r.stderr
