@@ -270,7 +270,8 @@ def model_from_scene(scene, comm=None):
             shape = RectangularRing(0.5 * sl.inner_diameter,
                                     0.5 * sl.inner_diameter + sl.height,
                                     z0 - 0.5 * sl.width, z0 + 0.5 * sl.width)
-        mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache)
+        mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache,
+                          mirror=m.symmetric)
     material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)
     return SealModel(mesh, material, scene.rod.radius, 0.5 * gr.diameter,
                      (z0 - 0.5 * gr.width, z0 + 0.5 * gr.width),

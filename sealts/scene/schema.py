@@ -126,6 +126,9 @@ class Mesh:
     grading_distance: float = option(0.5, unit="mm", gt=0.0,
                                      doc="distance over which sizes grow to h_bulk")
     cache: str = option("meshes", doc="mesh cache directory (relative to the working dir)")
+    symmetric: bool = option(False, doc="mesh half the cross-section and mirror it about the "
+                                        "groove's mid-plane, so the mesh is mirror-symmetric "
+                                        "node for node (oring, rectangle)")
 
 
 @dataclass(frozen=True)
@@ -270,6 +273,9 @@ def _check_seal_geometry(s, base):
         _check_file("seal.mesh_file", sl.mesh_file, base)
         if Path(sl.mesh_file).suffix not in (".msh", ".geo"):
             raise SceneError(f"seal.mesh_file = {sl.mesh_file}: must be a .msh or .geo file")
+        if s.mesh.symmetric:
+            raise SceneError("mesh.symmetric = true needs a built-in seal.shape ('oring' or "
+                             "'rectangle'); a mesh file is used as it is")
         return   # the rest is checked on the mesh itself (sealts.problem.seal_run)
     if sl.mesh_file:
         raise SceneError(f"seal.mesh_file is only used with seal.shape = 'file' "
