@@ -170,7 +170,11 @@ def test_stroke_at_minus_v_is_the_mirror_image(mounted, strokes):
     p and 3e-10 relative in the scalars (the flows with U' from the step's difference).
     Bounds: 1e-10 mm for displacements, y and h (2.5e-7 of min h), 1e-8 of the peak film
     pressure, 1e-8 of each scalar's largest magnitude over the run. Breaking the symmetry on
-    purpose moves these by 1e-6 and more (the commit that added this test lists how).
+    purpose fails them: a 1e-4 imbalance of the film's Gauss weights or of the rod's
+    tributary lengths moves the displacements by 6e-8 mm, a shear 1e-4 too large in one
+    direction by 4e-6 mm, groove walls 0.1 um off centre or p_out = 1e-3 MPa by 2e-4 mm. On
+    the default (unsymmetric) coarse mesh the mirrored runs differ by 2 % in min h, 2.4 % in
+    the peak pressure and 12 % in the film load.
 
     Two choices make the check this tight. Fixed steps: with TS's adaptive steps the step
     sizes of the two runs part by up to 3e-4 of a step (the error estimate, a difference of
@@ -226,7 +230,9 @@ def test_terms_are_mirror_equivariant(mounted):
     chain node; groove: (a_r, a_z) -> (a_r, -a_z) on the mirrored node). The stroke steps'
     own starts fix the film's row scales, which must be mirror images too. Bound 1e-9 of
     each row block's largest entry: both sides add the same numbers in another order
-    (measured at most 9e-12, on the film rows, whose balances cancel; anchors to 0)."""
+    (measured at most 9e-12, on the film rows, whose balances cancel; anchors to 0). A friction
+    law 1e-3 stronger in -z, or side wall b's tangent tilted by 1e-3, breaks it by 1e-5 and
+    2e-5 of the largest force."""
     cache, model, u, j = mounted
     steps = {sign: StrokeStep(model, u, symmetric_scene(cache, sign * 100.0, friction=True))
              for sign in (1, -1)}
