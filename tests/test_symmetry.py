@@ -231,8 +231,8 @@ def test_terms_are_mirror_equivariant(mounted):
     own starts fix the film's row scales, which must be mirror images too. Bound 1e-9 of
     each row block's largest entry: both sides add the same numbers in another order
     (measured at most 9e-12, on the film rows, whose balances cancel; anchors to 0). A friction
-    law 1e-3 stronger in -z, or side wall b's tangent tilted by 1e-3, breaks it by 1e-5 and
-    2e-5 of the largest force."""
+    law 1e-3 stronger in -z, or side wall b's tangent tilted by 1e-3, breaks it by
+    5e-5 and 2e-5 of the largest force."""
     cache, model, u, j = mounted
     steps = {sign: StrokeStep(model, u, symmetric_scene(cache, sign * 100.0, friction=True))
              for sign in (1, -1)}
