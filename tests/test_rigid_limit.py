@@ -111,8 +111,9 @@ def runs(tmp_path_factory):
         (ta, Ua), (tb, Ub) = last
         assert tb == sa.stroke.t_end
         y0, h0, _, _ = step.film.film(0.0, U0)
-        ref = film_only(y0, h0, sa, step.film.area)
-        out[alpha] = dict(step=step, U0=U0, U=U, y0=y0, h0=h0, ref=ref,
+        area = 2.0 * np.pi * sa.rod.radius                  # Eq. 31, from the scene
+        ref = film_only(y0, h0, sa, area)
+        out[alpha] = dict(step=step, U0=U0, U=U, y0=y0, h0=h0, ref=ref, area=area,
                           end=step.film.film(tb, Ub, (Ub - Ua) / (tb - ta)),
                           scalars=step.scalars(tb, Ub, (Ub - Ua) / (tb - ta)), scene=sa)
     return out
@@ -137,9 +138,16 @@ def test_stiff_seal_reproduces_the_film_only_solution(runs):
     * the error falls like the compliance, 1/alpha: e_p(10 alpha) / e_p(alpha) between
       0.07 and 0.14 (measured 0.100 and 0.104: first order in 1/alpha), and at alpha = 1000
       e_p < 1e-4 (measured 3.7e-5);
-    * the leakage flows Q_in and Q_out equal the film-only flow to 4 eps as well (measured
-      2.5e-4, 1e-5, 1e-6: the film's pressure is antisymmetric about the lowest point, so the
-      gap there, which sets Q, changes only at second order).
+    * the leakage flows Q_in and Q_out equal the film-only flow, with A = 2 pi r_rod from the
+      scene (Eq. 31), to 4 eps as well (measured 2.5e-4, 1e-5, 1e-6: the film's pressure is
+      antisymmetric about the lowest point, so the gap there, which sets Q, changes only at
+      second order).
+
+    The frozen gap, the reference and the coupled film share the film's gap and scheme, so
+    a fault there would cancel; the checks against H0 (placed from the mesh coordinates) and
+    against the exact integral catch it (a rod 10 nm off, or the Couette flux 1e-3 too large,
+    fail them), as the comparison catches a coupled film with eta 1e-3 too large (e_p = 1e-3
+    at alpha = 1000) or a film area 1 % too large (Q).
 
     (At the paper's stiffness, alpha = 1, e_p is 4.9 % and the flow is 1.6 % off: the seal
     is soft enough for the film to reshape its own gap.)
@@ -151,7 +159,7 @@ def test_stiff_seal_reproduces_the_film_only_solution(runs):
         assert np.abs(h0 - first["h0"]).max() <= 1e-9 * H0
         assert np.abs(y0 - first["y0"]).max() <= 1e-9
         assert h0.min() == pytest.approx(H0, rel=1e-9)
-        p_exact, q_exact = exact_film(y0, h0, r["scene"].fluid.viscosity, r["step"].film.area)
+        p_exact, q_exact = exact_film(y0, h0, r["scene"].fluid.viscosity, r["area"])
         peak = np.abs(p_ref).max()
         assert peak > 5e-3                                   # MPa
         assert np.abs(p_ref - p_exact).max() <= 2e-3 * peak
