@@ -127,23 +127,28 @@ def mid_plane(shape):
 
 
 def mirror_map(X, z_m, tol=1e-12):
-    """The node j(i) nearest to the mirror image (r_i, 2 z_m - z_i) of each node i, for a
-    mesh that is mirror-symmetric about z = z_m to ``tol`` times its size (mm); ValueError
-    naming the worst node otherwise."""
+    """The node j(i) at the mirror image (r_i, 2 z_m - z_i) of each node i, for a mesh that
+    is mirror-symmetric about z = z_m to ``tol`` times its size (mm); ValueError naming the
+    worst node otherwise."""
     X = np.asarray(X, float)
     image = X * [1.0, -1.0] + [0.0, 2.0 * z_m]
-    j = np.empty(X.shape[0], np.int64)
-    err = np.empty(X.shape[0])
-    for a in range(0, X.shape[0], 512):               # brute force, in chunks
-        d = np.abs(image[a:a + 512, None, :] - X[None, :, :]).max(2)
-        j[a:a + 512] = d.argmin(1)
-        err[a:a + 512] = d.min(1)
-    scale = max(float(np.abs(X).max()), 1.0)
-    if err.max() > tol * scale or np.any(j[j] != np.arange(j.size)):
+    atol = tol * max(float(np.abs(X).max()), 1.0)
+    order = np.argsort(X[:, 0], kind="stable")
+    r = X[order, 0]
+    lo = np.searchsorted(r, image[:, 0] - atol, "left")
+    hi = np.searchsorted(r, image[:, 0] + atol, "right")
+    j = np.zeros(X.shape[0], np.int64)
+    err = np.full(X.shape[0], np.inf)
+    for i in range(X.shape[0]):                 # candidates: the nodes at the image's r
+        cand = order[lo[i]:hi[i]]
+        if cand.size:
+            d = np.abs(X[cand] - image[i]).max(1)
+            k = int(d.argmin())
+            j[i], err[i] = cand[k], d[k]
+    if err.max() > atol or np.any(j[j] != np.arange(j.size)):
         i = int(err.argmax())
         raise ValueError(f"not mirror-symmetric about z = {z_m:g}: node {i} at "
-                         f"({X[i, 0]:.6g}, {X[i, 1]:.6g}) has no image within "
-                         f"{tol * scale:.1e} mm (the nearest is {err[i]:.3g} mm off)")
+                         f"({X[i, 0]:.6g}, {X[i, 1]:.6g}) has no image within {atol:.1e} mm")
     return j
 
 
@@ -152,7 +157,8 @@ def _mirrored_mesh(shape, h_contact, h_bulk, grading_distance):
     z_m = mid_plane(shape)
     X, conn, edges, mid = _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=True)
     n = X.shape[0]
-    assert np.abs(X[mid, 1] - z_m).max() < 1e-9 * max(1.0, abs(X).max())
+    if np.abs(X[mid, 1] - z_m).max() > 1e-9 * max(1.0, np.abs(X).max()):
+        raise RuntimeError("gmsh put nodes of the mid-plane off it")
     X[mid, 1] = z_m                          # exactly on the plane: their images are them
     image = np.arange(n, 2 * n)
     image[mid] = mid
