@@ -35,10 +35,12 @@ and the instroke, all mm^3; peak friction in N):
   from rtol 1e-4; rtol 1e-2 is 1 mm^3 off.
 
 The tolerances below are therefore not the error of the result (above) but what a change of
-platform may move the same computation by (the adaptive step sequence reacts to roundoff;
-its effect is bounded by the time error): 0.3 mm^3 on the net leakage, 0.6 % on the
-transports, 0.3 % on the peak friction. Any change of the model or the discretisation that
-moves the result by the mesh errors above fails it.
+platform may move the same computation by. The friction anchors are updated per accepted
+step, outside the TS error estimate, so the step sequence itself moves the result: the same
+scene without the output stops gives 15.78 mm^3 at rtol 1e-3 (scripts/bench_stroke.py), and
+roundoff may change a rejection and with it the sequence. Hence 0.5 mm^3 on the net leakage,
+0.6 % on the transports, 0.3 % on the peak friction. Any change of the model or the
+discretisation that moves the result by the mesh errors above (3 to 5 mm^3) fails it.
 """
 import csv
 import json
@@ -67,7 +69,7 @@ def cycle(tmp_path_factory):
 def test_cycle_leakage_and_peak_friction(cycle):
     st = cycle[0]["stroke"]
     assert st["unknowns"] == 2821                      # the 0.025 / 0.2 mesh of the study
-    assert st["leakage_out"] == pytest.approx(15.88, abs=0.3)
+    assert st["leakage_out"] == pytest.approx(15.88, abs=0.5)
     assert st["outstroke_transport"] == pytest.approx(83.98, rel=6e-3)
     assert st["instroke_transport"] == pytest.approx(-68.10, rel=6e-3)
     assert st["peak_friction_outstroke"] == pytest.approx(67.43, rel=3e-3)
