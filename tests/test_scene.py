@@ -148,6 +148,7 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[stroke]\nvelocity = 'sinus'\n", "stroke.velocity must be one of"),
     ("[start]\nstate = 'nope.h5'\n", "start.state: no such file"),
     ("[fluid]\np_crit = -0.1\n", "fluid.p_crit must be >= 0 MPa"),
+    ("[fluid]\np_in = 0.5\np_out = 0.5\n", "fluid.p_out = 0.5 MPa: a seal scene's atmosphere"),
     ("[groove]\nmu = -0.1\n", "groove.mu must be >= 0"),
     ("[stroke]\nvelocity = 'sine'\ngamma_crit = 0.0\n", "stroke.gamma_crit must be > 0 mm"),
     ("[stroke]\nvelocity = 'sine'\n[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\n"

@@ -384,6 +384,10 @@ def _check_consistency(s, base):
                              "'mooney-rivlin'")
         _check_viscoelastic(s)
         _check_stroke(s, base)
+        if s.fluid.p_out != 0.0:
+            raise SceneError(f"fluid.p_out = {s.fluid.p_out:g} MPa: a seal scene's "
+                             "atmosphere side is at 0 MPa (its free surface is not loaded "
+                             "by p_out; not modelled yet)")
         if s.start.state:
             _check_file("start.state", s.start.state, base)
         return
