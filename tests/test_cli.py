@@ -43,6 +43,11 @@ def test_slider_run_writes_the_output_contract(tmp_path):
     assert len(rows) == 3 * 1001
     series = list(csv.DictReader(open(out / "series.csv")))
     assert len(series) == summary["steps_accepted"] + 1  # plus the initial state
+    import h5py
+    with h5py.File(out / "series.h5") as f:              # the same series in HDF5
+        assert f.attrs["columns"].split(",") == list(series[0])
+        for k in series[0]:
+            assert np.allclose(f[k][:], [float(r[k]) for r in series], rtol=1e-9)
     for name in ("profiles.png", "series.png"):
         assert (out / name).stat().st_size > 10_000
 

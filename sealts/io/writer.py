@@ -5,6 +5,8 @@ OUTDIR/
                  (``results``) and, for transient runs, at t = 0 (``results_t0``)
   profiles.csv   long format: t, y, h, p, tau [, p_asperity, tau_solid]  (mm, MPa, s)
   series.csv     transient runs: one row per accepted step
+  series.h5      the same columns as HDF5 datasets (written when the run ends, also after
+                 a failure; series.csv is the record while it runs)
   hold_profiles.csv  seal scenes with a viscoelastic hold: t (s of the hold), y, h, p_contact
   stroke_profiles.csv  seal scenes with a stroke: t (s of the stroke), y, h, p, p_asperity,
                  tau, tau_solid (film pressure and shear, asperity pressure and friction)
@@ -91,6 +93,11 @@ class Writer:
         for f, _ in self._files.values():
             f.close()
         self._files.clear()
+        if self._series:
+            keys = list(self._series[0])
+            self.state({k: [r.get(k, np.nan) for r in self._series] for k in keys},
+                       {"columns": ",".join(keys), "units": "mm, N, s, MPa (as series.csv)"},
+                       name="series.h5")
         if self.plots:
             from .plots import plot_profiles, plot_series
             for name, profiles in self._profiles.items():
