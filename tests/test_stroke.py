@@ -75,7 +75,9 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     """With the Prony series of Table 2 the stroke starts from the relaxed state: the start is
     solved with the long-term material, so displacements and film equal the hyperelastic
     start's (to 1e-9 mm and 1e-9 MPa), and with every H_i = S_iso(u) and the frozen terms'
-    stress set there, the viscoelastic DAE is in balance at t = 0 (no jump)."""
+    stress set there, the viscoelastic DAE is in balance at t = 0 (no jump), and its Cauchy
+    stress (elastic part plus -F sum g_i H_i F^T / J) is the long-term one (1e-9 of the
+    largest)."""
     from dataclasses import replace
     step, U0, _, _, (s, model, u) = stroke
     ve = replace(s.viscoelastic, prony="table2", t_min=1e-3)
@@ -88,6 +90,13 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     f = vstep.problem.residual(0.0, V0, np.zeros_like(V0))
     assert np.abs(f[vlay.prony_dofs]).max() < 1e-9 * model.force_scale
     assert np.abs(f[vlay.udofs]).max() < 10 * 1e-9 * model.force_scale
+    from sealts.problem.seal_run import element_stresses
+    long_term = element_stresses(model, vstep.displacement(V0))[0]
+    relaxed = element_stresses(model, V0, vstep.solid, vstep.prony)[0]
+    elastic_only = element_stresses(model, V0, vstep.solid)[0]
+    big = np.abs(long_term).max()
+    assert np.abs(relaxed - long_term).max() < 1e-9 * big
+    assert np.abs(elastic_only - long_term).max() > 0.1 * big     # the Prony part matters
 
 
 def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):

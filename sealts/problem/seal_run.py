@@ -308,12 +308,19 @@ def _file_mesh(path, cache, r_rod, groove):
     return replace(mesh, X=X)
 
 
-def element_stresses(model, u):
-    """Element-mean Cauchy stress (rr, zz, tt, rz), von Mises and pressure (MPa)."""
+def element_stresses(model, u, solid=None, prony=None):
+    """Element-mean Cauchy stress (rr, zz, tt, rz), von Mises and pressure (MPa) of the
+    long-term material (``model.full_solid()``), or of ``solid`` plus the Prony stress of
+    ``prony`` (:meth:`sealts.solid.viscoelastic.PronyTerm.viscous_cauchy`) at the state u
+    of their layout."""
     from ..solid.neo_hooke import cauchy_stress
-    f, P, p_el, _ = model.full_solid().state(u)
+    solid = model.full_solid() if solid is None else solid
+    f, P, p_el, _ = solid.state(u)
     s = cauchy_stress(f.reshape(-1, 5), P.reshape(-1, 5), np.repeat(p_el, 4))
-    s = s.reshape(-1, 4, 4).mean(1)
+    s = s.reshape(-1, 4, 4)
+    if prony is not None:
+        s = s + prony.viscous_cauchy(u)
+    s = s.mean(1)
     rr, zz, tt, rz = s.T
     mises = np.sqrt(0.5 * ((rr - zz) ** 2 + (zz - tt) ** 2 + (tt - rr) ** 2) + 3 * rz**2)
     return s, mises, -(rr + zz + tt) / 3.0

@@ -18,8 +18,8 @@ monolithic DAE for seal plus film (paper Section 3.1.1, step 3):
 
 Output: series.csv per accepted step; at t = 0, each of stroke.output_times and t_end the
 profiles (stroke_profiles.csv) and the fields (stroke_fields.xdmf/.h5, a time series:
-displacement and film pressure on nodes, with the long-term material also the Cauchy
-stresses on cells).
+displacement and film pressure on nodes, the Cauchy stresses on cells, with the Prony
+part in a viscoelastic stroke).
 
 Leakage: Q_in enters the film at the pressure side, Q_out leaves it at the atmosphere side
 (Eq. 41); V_in and V_out (Eq. 42) are two more unknowns, dV/dt = Q
@@ -292,8 +292,8 @@ def run_stroke(model, u, scene, writer, comm, say):
 
     def snapshot(t, Ut):
         """Profiles and fields at an output time (not at the other TS stops: kinks and
-        reversals of v): displacement and film pressure on nodes; with the long-term
-        material also the stresses on cells."""
+        reversals of v): displacement and film pressure on nodes, the Cauchy stresses on
+        cells (with the Prony part when viscoelastic)."""
         if not any(abs(t - w) <= 1e-9 * max(1.0, w) for w in wanted):
             return
         writer.profile(t, step.profile(t, Ut), name="stroke_profiles.csv")
@@ -304,11 +304,12 @@ def run_stroke(model, u, scene, writer, comm, say):
         disp[:, :2] = u[model.udofs]
         p = np.zeros(mesh.X.shape[0])
         p[lay.rod_nodes] = Ut[lay.film_dofs]          # none without the film
-        cells = {}
         if step.viscoelastic is None:
             sig, mises, pressure = element_stresses(model, u)
-            cells = {"von_mises": mises, "pressure": pressure, "sigma_rr": sig[:, 0],
-                     "sigma_zz": sig[:, 1], "sigma_tt": sig[:, 2], "sigma_rz": sig[:, 3]}
+        else:
+            sig, mises, pressure = element_stresses(model, Ut, step.solid, step.prony)
+        cells = {"von_mises": mises, "pressure": pressure, "sigma_rr": sig[:, 0],
+                 "sigma_zz": sig[:, 1], "sigma_tt": sig[:, 2], "sigma_rz": sig[:, 3]}
         fields.add(t, {"displacement": disp, "film_pressure": p}, cells)
 
     snapshot(0.0, U)

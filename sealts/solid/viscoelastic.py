@@ -233,6 +233,22 @@ class PronyTerm(Term):
         return np.concatenate([Kuu.ravel(), KuH.ravel(), KHu.ravel(),
                                np.repeat(KHH.ravel(), 4)])
 
+    def viscous_cauchy(self, u):
+        """The Prony part of the Cauchy stress at every Gauss point, (ne, 4, 4) as
+        (rr, zz, tt, rz): sigma_v = -(1/J) F H_tot F^T, the push-forward of the -sum g_i H_i
+        of (a) (frozen and active terms). Added to the elastic term's Cauchy stress it is
+        the seal's stress (output only)."""
+        f = self.solid.state(u)[0]                                   # (ne, 4, 5)
+        H = self.frozen + np.einsum("a,eqak->eqk", self.g, u[self.hdofs])
+        F11, F12, F21, F22, F33 = np.moveaxis(f, -1, 0)
+        J = (F11 * F22 - F12 * F21) * F33
+        h11, h22, h33, h12 = np.moveaxis(H, -1, 0)
+        rr = F11 * F11 * h11 + 2.0 * F11 * F12 * h12 + F12 * F12 * h22
+        zz = F21 * F21 * h11 + 2.0 * F21 * F22 * h12 + F22 * F22 * h22
+        rz = F11 * F21 * h11 + (F11 * F22 + F12 * F21) * h12 + F12 * F22 * h22
+        tt = F33 * F33 * h33
+        return -np.stack([rr, zz, tt, rz], -1) / J[..., None]
+
     def equilibrium(self, u):
         """H_i = S_iso(u) at every Gauss point, for every active term: the relaxed start,
         (ne, 4, na, 4); also the frozen-stress unit S_iso (ne, 4, 4)."""
