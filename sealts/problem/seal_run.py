@@ -41,7 +41,7 @@ class SealModel:
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
                  h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0,
-                 corner_radius=0.0, comm=None):
+                 corner_radius=0.0, comm=None, hold_rolling=False):
         from petsc4py import PETSc
 
         from ..solid.pressure import boundary_loop
@@ -86,6 +86,14 @@ class SealModel:
         circ = 2 * np.pi * X[:, 0].mean() if axisym else depth
         self.force_scale = material.shear_modulus * cross * circ
         self._full_solid = None
+        # plane strain, circular section: rolling is a free mode of steps 1-2, held by a
+        # pure couple of stiffness G A R^2 (sealts.solid.rolling)
+        self.gauge = None
+        if hold_rolling and not axisym:
+            from ..solid.rolling import RollingGauge, gauge_nodes
+            nodes = gauge_nodes(X, boundary_loop(mesh.conn)[:, 0])
+            r2 = float(((X[nodes] - X[nodes].mean(0)) ** 2).sum(1).mean())
+            self.gauge = RollingGauge(X, nodes, udofs, material.shear_modulus * cross * r2)
 
     def local_terms(self, boundary, stab=False, dofs=None, solid=None):
         """This rank's terms: its cells' solid, (its owned nodes' stabilisation), and on
@@ -101,6 +109,10 @@ class SealModel:
             self._full_solid = SolidTerm(self.mesh.X, self.mesh.conn, self.material,
                                          self.axisym, udofs=self.udofs, heating=s.heating)
         return self._full_solid
+
+    def walls(self):
+        """The boundary terms of steps 1-2: rod, groove (and the rolling gauge)."""
+        return [self.rod, self.groove] + ([self.gauge] if self.gauge is not None else [])
 
     def rod_radius(self, t):
         return self.r_rod0 + (self.r_rod_final - self.r_rod0) * ramp(t)
@@ -120,7 +132,7 @@ class SealModel:
         """
         atol = 1e-9 * self.force_scale
         comm = self.comm
-        problem = Problem(self.n, self.local_terms([self.rod, self.groove] + extra, stab=True),
+        problem = Problem(self.n, self.local_terms(self.walls() + extra, stab=True),
                           comm=comm, linesearch="basic", snes_atol=atol, dofs=self.dofs)
         hist = []
 
@@ -143,7 +155,7 @@ class SealModel:
     def _static(self, extra, u, t, comm):
         """Newton from u on the unstabilised equilibrium at t (raises SolveError); its
         iterations count towards ``self.problem``'s."""
-        static = Problem(self.n, self.local_terms([self.rod, self.groove] + extra),
+        static = Problem(self.n, self.local_terms(self.walls() + extra),
                          comm=self.comm, linesearch="basic",
                          snes_atol=1e-9 * self.force_scale, prefix="static_", dofs=self.dofs)
         static.max_it = 10
@@ -251,6 +263,9 @@ class SealModel:
         out["stabilisation_share"] = float(np.abs(stab).max()
                                            / max(np.abs(f_rod).max(), 1e-300))
         out["static_equilibrium"] = self.static
+        if self.gauge is not None:
+            out["rolling_angle_deg"] = float(np.degrees(self.gauge.angle(u)))
+            out["rolling_gauge_torque"] = self.gauge.torque(u)
         return out
 
 
@@ -278,7 +293,8 @@ def model_from_scene(scene, comm=None):
                      axisym=sl.symmetry == "axisymmetric", h_mix=scene.asperity.h_mix,
                      p_mix=scene.asperity.p_mix, penalty=scene.mount.penalty,
                      stabilisation=scene.mount.stabilisation,
-                     corner_radius=gr.corner_radius, comm=comm)
+                     corner_radius=gr.corner_radius, comm=comm,
+                     hold_rolling=sl.shape == "oring")
 
 
 def _file_mesh(path, cache, r_rod, groove):
