@@ -403,16 +403,22 @@ class Problem:
                   rtol=1e-6, atol=1e-8):
         """Integrate from t0 to t_end with adaptive steps.
 
-        ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0);
+        ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0); a
+        SolveError it raises ends the run with its own message;
         ``on_stop(t, u)`` at each time in ``stops`` (hit exactly) and at t_end.
         """
         last = [None]
+        raised = []
 
         def monitor(ts, step, t, X):
             # TS calls its monitor at the start of every solve(): report each state once
             if on_step is not None and t != last[0]:
                 last[0] = t
-                on_step(ts, step, t, self.gather(X).copy())
+                try:
+                    on_step(ts, step, t, self.gather(X).copy())
+                except SolveError as e:    # PETSc would turn it into "error 101"
+                    raised.append(e)
+                    raise
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
         X = self._owned(u0)
@@ -422,6 +428,8 @@ class Problem:
             try:
                 ts.solve(X)
             except PETSc.Error as e:
+                if raised:       # a monitor's own verdict (one line) stands
+                    raise raised[0] from None
                 raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
                                  f"(PETSc error {e.ierr}); see the PETSc message above") from None
             reason = ts.getConvergedReason()

@@ -87,13 +87,15 @@ class SealModel:
         self.force_scale = material.shear_modulus * cross * circ
         self._full_solid = None
         # plane strain, circular section: rolling is a free mode of steps 1-2, held by a
-        # pure couple of stiffness G A R^2 (sealts.solid.rolling)
-        self.gauge = None
-        if hold_rolling and not axisym:
-            from ..solid.rolling import RollingGauge, gauge_nodes
-            nodes = gauge_nodes(X, boundary_loop(mesh.conn)[:, 0])
-            r2 = float(((X[nodes] - X[nodes].mean(0)) ** 2).sum(1).mean())
-            self.gauge = RollingGauge(X, nodes, udofs, material.shear_modulus * cross * r2)
+        # pure couple of stiffness G A R^2 (sealts.solid.rolling); the same measure of the
+        # rolling angle, without the couple, for every model's messages
+        from ..solid.rolling import RollingGauge, gauge_nodes
+        nodes = gauge_nodes(X, boundary_loop(mesh.conn)[:, 0])
+        r2 = float(((X[nodes] - X[nodes].mean(0)) ** 2).sum(1).mean())
+        self.roll = RollingGauge(X, nodes, udofs, material.shear_modulus * cross * r2)
+        self.gauge = self.roll if hold_rolling and not axisym else None
+        # boundary nodes the rod does not act on (only the rod side carries contact and film)
+        self.off_rod = np.setdiff1d(bnd, chain)
 
     def local_terms(self, boundary, stab=False, dofs=None, solid=None):
         """This rank's terms: its cells' solid, (its owned nodes' stabilisation), and on
@@ -109,6 +111,29 @@ class SealModel:
             self._full_solid = SolidTerm(self.mesh.X, self.mesh.conn, self.material,
                                          self.axisym, udofs=self.udofs, heating=s.heating)
         return self._full_solid
+
+    def check_rod_side(self, t, u, udofs=None, r_rod=None):
+        """SolveError (one line) when a boundary node off the rod side is more than h_mix
+        inside the rod: the rod side, which alone feels the rod (and carries the film), no
+        longer covers the contact, and nothing stops the others from passing through; a
+        run would only crawl on (dt ~ 1e-7). ``udofs``, ``r_rod``: another layout's (the
+        stroke's)."""
+        udofs = self.udofs if udofs is None else udofs
+        r_rod = self.rod_radius(t) if r_rod is None else r_rod
+        off = self.off_rod
+        depth = r_rod - (self.mesh.X[off, 0] + u[udofs[off, 0]])
+        k = int(np.argmax(depth))
+        if depth[k] <= self.rod.h_mix:
+            return
+        u_ser = np.zeros(self.n)
+        u_ser[self.udofs] = u[udofs]
+        roll = np.degrees(self.roll.angle(u_ser))
+        why = ("" if self.axisym else
+               f"; the plane-strain section has rolled by {roll:.3g} degrees (without hoop "
+               "strain only friction holds a round section from rolling)")
+        raise SolveError(f"at t = {t:.6g} node {off[k]} off the rod side is "
+                         f"{depth[k] * 1e3:.3g} um inside the rod: the rod side no longer "
+                         f"covers the contact{why}")
 
     def walls(self):
         """The boundary terms of steps 1-2: rod, groove (and the rolling gauge)."""
@@ -137,6 +162,7 @@ class SealModel:
         hist = []
 
         def record(ts, step, t, u):
+            self.check_rod_side(t, u)
             hist[:] = hist[-1:] + [(t, u)]
             if on_step is not None:
                 on_step(ts, step, t, u)

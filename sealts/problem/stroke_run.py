@@ -183,7 +183,9 @@ class StrokeStep:
         return [f for f in (self.friction, self.groove_friction) if f is not None]
 
     def accepted(self, t, U):
-        """After an accepted step: the frictions' elastic slips are capped (their anchors)."""
+        """After an accepted step: the frictions' elastic slips are capped (their anchors);
+        a seal whose rod side has left the rod is a SolveError (``check_rod_side``)."""
+        self.model.check_rod_side(t, U, self.layout.udofs, self.model.r_rod_final)
         for fr in self.frictions:
             fr.update(t, U)
 
