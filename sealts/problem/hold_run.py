@@ -130,7 +130,9 @@ class HoldStep:
         self.U0 = np.zeros(lay.n)
         self.U0[lay.udofs] = u0[model.udofs]
         self.U0[lay.prony_dofs[lay.cells]] = H0
-        terms = model.local_terms([self.rod, self.groove, self.load], dofs=lay,
+        # the planar O-ring's rolling gauge too (frictionless, as steps 1-2)
+        self.gauge = [model.gauge] if model.gauge is not None else []
+        terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge, dofs=lay,
                                   solid=self.solid)
         terms.insert(1, self.prony)
         fields = {"displacement": lay.field_dofs("displacement")}
@@ -170,7 +172,8 @@ class HoldStep:
         load = copy.copy(self.load)
         load.pressure = lambda t: self.p_to
         # the hold's state in the long-term problem: its out-of-balance nodal forces
-        residual = Problem(m.n, m.local_terms([self.rod, self.groove, load]), comm=m.comm,
+        residual = Problem(m.n, m.local_terms([self.rod, self.groove, load] + self.gauge),
+                           comm=m.comm,
                            dofs=m.dofs).global_residual(t_end, u)
         out = {"long_term_residual_max_N": float(np.abs(residual).max())}
         try:
