@@ -37,11 +37,15 @@ class SealModel:
     (mesh): every rank evaluates them on the gathered state for outputs and front updates,
     and rank 0 alone assembles the rod, groove and pressure terms (``local_terms``). The
     stabilisation is assembled by each rank over the nodes it owns. Problems run on the
-    model's communicator; the ``comm`` arguments of its methods are kept for callers."""
+    model's communicator; the ``comm`` arguments of its methods are kept for callers.
+
+    ``hold_rolling``: hold the rolling angle with ``gauge`` (:mod:`sealts.solid.rolling`) in
+    steps 1-2 (and the hold); by default on a plane-strain section whose boundary is a
+    circle, which nothing else holds from rolling between frictionless walls."""
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
                  h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0,
-                 corner_radius=0.0, comm=None, hold_rolling=False):
+                 corner_radius=0.0, comm=None, hold_rolling=None):
         from petsc4py import PETSc
 
         from ..solid.pressure import boundary_loop
@@ -86,13 +90,16 @@ class SealModel:
         circ = 2 * np.pi * X[:, 0].mean() if axisym else depth
         self.force_scale = material.shear_modulus * cross * circ
         self._full_solid = None
-        # plane strain, circular section: rolling is a free mode of steps 1-2, held by a
-        # pure couple of stiffness G A R^2 (sealts.solid.rolling); the same measure of the
+        # plane strain, round section: rolling is a free mode of steps 1-2, held by a pure
+        # couple of stiffness G A R^2 (sealts.solid.rolling); the same measure of the
         # rolling angle, without the couple, for every model's messages
-        from ..solid.rolling import RollingGauge, gauge_nodes
-        nodes = gauge_nodes(X, boundary_loop(mesh.conn)[:, 0])
+        from ..solid.rolling import RollingGauge, gauge_nodes, is_round
+        loop = boundary_loop(mesh.conn)[:, 0]
+        nodes = gauge_nodes(X, loop)
         r2 = float(((X[nodes] - X[nodes].mean(0)) ** 2).sum(1).mean())
         self.roll = RollingGauge(X, nodes, udofs, material.shear_modulus * cross * r2)
+        if hold_rolling is None:
+            hold_rolling = is_round(X, loop)
         self.gauge = self.roll if hold_rolling and not axisym else None
         # boundary nodes the rod does not act on (only the rod side carries contact and film)
         self.off_rod = np.setdiff1d(bnd, chain)
@@ -319,8 +326,7 @@ def model_from_scene(scene, comm=None):
                      axisym=sl.symmetry == "axisymmetric", h_mix=scene.asperity.h_mix,
                      p_mix=scene.asperity.p_mix, penalty=scene.mount.penalty,
                      stabilisation=scene.mount.stabilisation,
-                     corner_radius=gr.corner_radius, comm=comm,
-                     hold_rolling=sl.shape == "oring")
+                     corner_radius=gr.corner_radius, comm=comm)
 
 
 def _file_mesh(path, cache, r_rod, groove):

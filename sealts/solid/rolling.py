@@ -15,7 +15,8 @@ and the film's surface -- had rolled off the rod and other nodes passed through 
 unopposed (rod force 0.004 N, "min h" -118 um, dt 1e-7: the crawl).
 
 ``RollingGauge`` fixes that gauge freedom with one scalar condition: the mean rolling angle
-of a ring of boundary nodes,
+of a ring of boundary nodes (``SealModel`` holds it on a plane-strain section whose
+boundary is a circle, ``is_round``: the O-ring, or a mesh file of one),
 
     omega(u) = sum_i (d_i x u_i) / sum_i |d_i|^2,   d_i = X_i - c (reference, c their mean),
 
@@ -31,12 +32,29 @@ import numpy as np
 from ..problem import Term
 
 
+def circle_fit(P):
+    """Least-squares circle through points P (n, 2) (Kasa's algebraic fit): centre, radius
+    and the largest relative distance of a point from it."""
+    A = np.column_stack([P, np.ones(len(P))])
+    sol = np.linalg.lstsq(A, (P**2).sum(1), rcond=None)[0]
+    c = 0.5 * sol[:2]
+    radius = float(np.sqrt(sol[2] + c @ c))
+    return c, radius, float(np.abs(np.hypot(*(P - c).T) - radius).max() / radius)
+
+
+def is_round(X, loop_nodes, tol=1e-3):
+    """Whether the boundary nodes lie on one circle (to ``tol`` of its radius): the
+    cross-sections whose rolled equilibria are a neutral family."""
+    return circle_fit(X[np.asarray(loop_nodes)])[2] <= tol
+
+
 def gauge_nodes(X, loop_nodes, count=16):
     """``count`` boundary nodes spread round the cross-section: the loop node nearest to
-    each of ``count`` equally spaced directions from the loop's centroid (unique)."""
+    each of ``count`` equally spaced directions from the centre of the loop's circle fit
+    (unique)."""
     loop_nodes = np.asarray(loop_nodes)
     P = X[loop_nodes]
-    c = P.mean(0)
+    c = circle_fit(P)[0]
     ang = np.arctan2(P[:, 1] - c[1], P[:, 0] - c[0])
     picks = []
     for a in np.linspace(-np.pi, np.pi, count, endpoint=False):
