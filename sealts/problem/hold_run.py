@@ -131,9 +131,9 @@ class HoldStep:
         self.U0[lay.udofs] = u0[model.udofs]
         self.U0[lay.prony_dofs[lay.cells]] = H0
         # the planar O-ring's rolling gauge too (frictionless, as steps 1-2)
-        self.gauge = [model.gauge] if model.gauge is not None else []
-        terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge, dofs=lay,
-                                  solid=self.solid)
+        self.gauge_terms = [model.gauge] if model.gauge is not None else []
+        terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge_terms,
+                                  dofs=lay, solid=self.solid)
         terms.insert(1, self.prony)
         fields = {"displacement": lay.field_dofs("displacement")}
         if ves.prony_size:
@@ -149,6 +149,7 @@ class HoldStep:
         front = RelaxedFront(self.load, max_advance=1.0)
 
         def step(ts, k, t, U):
+            self.model.check_rod_side(t, U, self.layout.udofs, self.model.r_rod_final)
             front(self.node_contact_pressure(t, U), self.load.pressure(t))
             if on_step is not None:
                 on_step(ts, k, t, U)
@@ -172,9 +173,8 @@ class HoldStep:
         load = copy.copy(self.load)
         load.pressure = lambda t: self.p_to
         # the hold's state in the long-term problem: its out-of-balance nodal forces
-        residual = Problem(m.n, m.local_terms([self.rod, self.groove, load] + self.gauge),
-                           comm=m.comm,
-                           dofs=m.dofs).global_residual(t_end, u)
+        residual = Problem(m.n, m.local_terms([self.rod, self.groove, load] + self.gauge_terms),
+                           comm=m.comm, dofs=m.dofs).global_residual(t_end, u)
         out = {"long_term_residual_max_N": float(np.abs(residual).max())}
         try:
             # pseudo-time 2..3 (the rod and groove of SealModel are final for t >= 1)
