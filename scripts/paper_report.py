@@ -1247,15 +1247,20 @@ def rel(path):
 
 
 def git_commit():
+    """HEAD, and the commit that last changed sealts/ (the code the runs ran), with a note
+    if sealts/, configs/ or this script differ from HEAD."""
+    def git(*args):
+        return subprocess.run(["git", "-C", str(ROOT), *args], capture_output=True,
+                              text=True, check=True).stdout.strip()
     try:
-        c = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"],
-                           capture_output=True, text=True, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", str(ROOT), "status", "--porcelain", "--",
-                                "sealts", "configs", "scripts/paper_report.py"],
-                               capture_output=True, text=True).stdout
-        return c + (" (with uncommitted changes in sealts/, configs/ or this script)" if dirty.strip() else "")
+        head = git("rev-parse", "--short", "HEAD")
+        code = git("log", "-1", "--format=%h", "--", "sealts")
+        dirty = git("status", "--porcelain", "--", "sealts", "configs",
+                    "scripts/paper_report.py")
     except (OSError, subprocess.CalledProcessError):
         return "unknown"
+    return (f"{head}, sealts/ as of {code}"
+            + (" (with uncommitted changes in sealts/, configs/ or this script)" if dirty else ""))
 
 
 def main():
