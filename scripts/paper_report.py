@@ -249,6 +249,15 @@ def film_metrics(prof, b):
             "total_max": float((p + pa)[m].max())}
 
 
+def ripple(prof, b):
+    """Amplitude of the node-to-node ripple of h over the band: half the largest deviation
+    of a node from the mean of its two neighbours (mm)."""
+    h = prof["h"][inside(prof, b)]
+    if h.size < 3:
+        return 0.0
+    return float(0.5 * np.abs(h[1:-1] - 0.5 * (h[:-2] + h[2:])).max())
+
+
 def steady_change(profs, b):
     """Largest change of h over the band between the last two output times, relative to
     the band's mean film, and the two times."""
@@ -554,7 +563,8 @@ leakage 10.7 / 12.0 / 15.9 mm^3 and outstroke volume 75.8 / 78.8 / 84.6 mm^3 on 
             ["negative fluid pressure, outstroke", "yes, at the outlet",
              f"{word(neg, 'yes', 'no')}: {mpa(o['p_min'])} at y = {o['y_pmin']:.2f} mm "
              f"({word(outlet, 'outlet (atmosphere) side', 'inlet side')})"],
-            ["negative fluid pressure, instroke", "-", f"{mpa(i['p_min'])}"],
+            ["negative fluid pressure, instroke", "-",
+             f"{word(i['p_min'] < -1e-3, 'yes', 'none')} (lowest {mpa(i['p_min'])})"],
         ]
         st = ", ".join(f"{d}stroke {100 * steady[d][0]:.2g} %" for d in P)
         self.add(f"""
@@ -574,8 +584,9 @@ sealed pressure on the left (small y).
 
 {table(["quantity", "paper", "sealts"], rows)}
 
-**Agreement.** The contact is mixed, the fluid shear is one to two orders of magnitude below
-the solid shear, the outstroke has the {word(o['p_max'] > i['p_max'], 'higher', 'lower')} fluid
+**Agreement.** The contact is {word(min(share.values()) > 0.01, 'mixed', 'not mixed')}, the
+fluid shear is {min(ratio.values()):.0f}-{max(ratio.values()):.0f} times below the solid
+shear (the paper: about two orders of magnitude), the outstroke has the {word(o['p_max'] > i['p_max'], 'higher', 'lower')} fluid
 pressure and the {word(o['tau_max'] > i['tau_max'], 'higher', 'lower')} fluid shear, the
 {word(o['pa_max'] < i['pa_max'], 'lower', 'higher')} solid contact pressure and the
 {word(o['taus_max'] < i['taus_max'], 'lower', 'higher')} solid shear, and the outstroke's
@@ -587,9 +598,10 @@ fluid pressure {word(neg and outlet, 'turns negative at the outlet', 'does not t
 stays close to the dry contact pressure: its peak here is {mpa(M['out']['total_max'])}
 (out) and {mpa(M['in']['total_max'])} (in), and the pressurised O-ring's dry contact peaks
 at {mpa(dry)} (2.71 MPa also on the paper's 0.01 mm mesh, README). A fluid pressure of
-3-3.5 MPa is more than this O-ring's whole contact pressure at 1 MPa; the paper's seal
-must press harder (the paper's Fig. 8a pressure axis does reach 3.6 MPa) for reasons it
-does not give (its geometry, Table 3, is the one used here). With the lower pressure
+3-3.5 MPa is more than this O-ring's whole contact pressure at 1 MPa, so the paper's seal
+presses harder on the rod than this one (its Fig. 8a pressure axis does reach 3.6 MPa),
+for reasons the paper does not give: its geometry and material (Table 3) are the ones used
+here, and it gives no dry contact pressure to compare. With the lower pressure
 and the asperities carrying {100 * share['out']:.0f}-{100 * share['in']:.0f} % of the load,
 the fluid peak is lower. (ii) *Film thickness*: {um(o['h_mean'])} (out) and
 {um(i['h_mean'])} (in) on average over the band, against "about 1 um". The paper's own
@@ -597,8 +609,8 @@ mixed contact needs h below h_mix = 0.7 um where the asperities touch, so its "a
 is the order of the film (its Fig. 8a axis runs 0-1 um), not a film of 1 um throughout;
 here it is about half that. The film is not mesh-converged either: the film carried out
 on the README's cycle grows with refinement (outstroke volume 75.8, 78.8, 84.6 mm^3 on
-the 0.1, 0.05, 0.01 mm contact meshes), and the inlet where the film forms spans only
-{self.inlet_elements:.1f} elements of this mesh.
+the 0.1, 0.05, 0.01 mm contact meshes), and the inlet rise of the contact pressure, where
+the film forms, spans {self.inlet_elements:.0f} element{'' if self.inlet_elements == 1 else 's'} of this mesh.
 """)
 
     # ---- Fig. 9 -------------------------------------------------------------------------
@@ -842,12 +854,17 @@ thing to test.
             a3.plot(pr["y"], pr["tau_solid"], "C3" + st, label=f"tau_s, {lab}")
         ax[1].set_ylabel("fluid shear stress tau_fl [1e-3 MPa]")
         a3.set_ylabel("solid shear stress tau_s [MPa]")
+        tf = 1.1e3 * max(np.abs(pr["tau"]).max() for pr in (a, c))
+        ts = 1.1 * max(np.abs(pr["tau_solid"]).max() for pr in (a, c))
+        ax[1].set_ylim(-0.25 * tf, tf)            # zero on both axes at the same height
+        a3.set_ylim(-0.25 * ts, ts)
+        ax[1].axhline(0.0, color="k", lw=0.6)
         zoom(ax[1], None, bfull)
         ax[1].set_xlabel("axial position y [mm]")
         h1, l1 = ax[1].get_legend_handles_labels()
         h2, l2 = a3.get_legend_handles_labels()
-        ax[1].legend(h1 + h2, l1 + l2, fontsize=7, loc="upper left")
-        ax[1].set_title("(b) shear stresses")
+        ax[1].legend(h1 + h2, l1 + l2, fontsize=7, loc="lower center")
+        ax[1].set_title("(b) shear stresses on the seal")
         name11 = self.savefig(fig, "fig11_flow_factors.png")
         share0 = S0["load_asperity"] / (S0["load_asperity"] + S0["load_fluid"])
         share1 = S1["load_asperity"] / (S1["load_asperity"] + S1["load_fluid"])
@@ -930,6 +947,7 @@ rougher turned surface, may act more strongly; their size is not given as number
             h_ihl = ihl_film(ip["y"], ip["p"], ip["dp_dy"], float(v), hs,
                              ih["outstroke"]["y_w"])
             self.numbers["fig12"][v] = {"hq": hq, "h_star": hs, "share": share, "M": M,
+                                        "ripple": ripple(pr, b),
                                         "inlet": inlet_span(ip, ih["outstroke"]["y_w"], 1.0)}
             rows.append([f"{v} mm/s", um(hs), um(hq), f"{100 * (hq / hs - 1):+.0f} %",
                          um(M["h_at_pmax"]), um(M["h_min"]),
@@ -1008,6 +1026,15 @@ peak of a steady, smooth film).
               f"element{'' if ne == 1 else 's'}, so w grows and h* falls as the mesh is "
               "refined, while the EHL film, which needs no gradient of the dry profile, "
               "grows (mesh check at the end). ")
+        r5, r1 = n[500]["ripple"], n[100]["ripple"]
+        t += (f"In full film the EHL film carries a node-to-node ripple of about "
+              f"+-{r5 * 1e3:.3f} um (Fig. 12b, also Fig. 9a; +-{r1 * 1e3:.3f} um at 100 mm/s, "
+              "where the stiff asperity law damps it). It looks like a mode of the film's "
+              "discretisation: the control-volume element flux sees h only through "
+              "symmetric Gauss averages over each element, so an alternating h changes "
+              "every element's flux alike, to second order, and leaves every nodal balance "
+              "unchanged; nothing in the film resists it and only the seal's stiffness "
+              "limits it. The flow (an element mean) hardly notices. ")
         t += (f"At 100 mm/s IHL's h* = {um(n[100]['h_star'])} is far below h_mix: IHL assumes "
               "the fluid carries the whole contact pressure, while here the asperities carry "
               f"{100 * n[100]['share']:.0f} % of it, so the fluid's pressure profile is flatter "
@@ -1019,7 +1046,7 @@ peak of a steady, smooth film).
         out = self.out
         plt = self.plt
         fig, ax = plt.subplots(1, 2, figsize=(13, 4.6))
-        rows, net, qr = [], {}, {}
+        rows, net, qr, tr = [], {}, {}, {}
         for key, tag, what in FIG14:
             try:
                 s = series(out, key)
@@ -1029,6 +1056,7 @@ peak of a steady, smooth film).
                 continue
             net[tag] = st["leakage_out"]
             qr[tag] = (float(s["Q_out"].min()), float(s["Q_out"].max()))
+            tr[tag] = (st["outstroke_transport"], -st["instroke_transport"])
             ax[0].plot(s["t"], s["Q_out"], label=f"Q {tag}")
             ax[1].plot(s["t"], s["V_out"], label=f"V {tag}")
             rows.append([tag, what, f"{st['leakage_out']:.2f}",
@@ -1061,8 +1089,13 @@ peak of a steady, smooth film).
             a.grid(alpha=0.3)
             a.legend(fontsize=8)
         ax[0].set_ylabel("volume flow rate Q_out [mm^3/s]")
+        ax[0].axhline(50, color="gray", ls=":", lw=0.8)
+        ax[0].axhline(-30, color="gray", ls=":", lw=0.8)
+        ax[0].text(0.2, 46, "paper's range: about -30 to +50", color="gray", fontsize=7)
         ax[0].set_title("(a) flow out of the seal at the atmosphere side")
         ax[1].set_ylabel("leakage volume V_out [mm^3]")
+        ax[1].plot([10.0], [100.0], "k*", ms=9, label="paper: ve,sq,Φ net (about 100)")
+        ax[1].legend(fontsize=8)
         ax[1].set_title("(b) leakage volume")
         name = self.savefig(fig, "fig14_leakage.png")
         self.numbers["fig14"] = {"net": net, "ihl": net_ihl}
@@ -1075,7 +1108,9 @@ v = 500 sin(2 pi t / 10 s) mm/s, outstroke first, from the pressurised state; fr
 "Steady Reynolds" is `[film] squeeze = false` (the paper's cases without "sq"); the
 viscoelastic runs use Table 2 from a relaxed start (terms faster than 1 ms folded in);
 flow factors as in Fig. 11. Q_out and V_out are the flow and volume leaving the film at
-the atmosphere side (+ = out of the cylinder). The IHL line is `sealts ihl` on
+the atmosphere side (+ = out of the cylinder); the short spikes at t = 0 and 5 s in the
+squeeze variants are squeeze flow while the friction builds up after a reversal and the
+seal shifts; the ve curves lie under the ve,sq ones. The IHL line is `sealts ihl` on
 `paper_fig14_ihl.toml` (dry, pressurised to 1 MPa, 500 mm/s): the flow A v h*(|v|)/2 with
 h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
 
@@ -1091,7 +1126,7 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
 | Q over the cycle | about -30 to +50 mm^3/s | {self._qrange(qr)} |
 | IHL net leakage | - | {net_ihl:.1f} mm^3 |
 
-**Differences.** {self._fig14_text(net, net_ihl, qr)}
+**Differences.** {self._fig14_text(net, net_ihl, qr, tr, ih)}
 """)
 
     @staticmethod
@@ -1115,37 +1150,42 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
         items = sorted(net.items(), key=lambda kv: kv[1])
         return " < ".join(f"{k} ({v:.1f})" for k, v in items)
 
-    @staticmethod
-    def _fig14_text(net, net_ihl, qr):
+    def _fig14_text(self, net, net_ihl, qr, tr, ih):
         he, ve, vs, vf = (net.get(k) for k in ("he", "ve", "ve,sq", "ve,sq,Φ"))
         t = []
         if None not in (he, ve, vs):
             t.append(f"The squeeze term changes the viscoelastic leakage by "
                      f"{abs(vs - ve):.2f} mm^3, negligible as in the paper. ")
-            if ve < he:
-                t.append(f"Unlike the paper, the viscoelastic cycle leaks *less* than the "
-                         f"hyperelastic one ({ve:.2f} against {he:.2f} mm^3): with a relaxed "
-                         "start the viscoelastic seal does not make a thicker film (Fig. 9 "
-                         "above), and its stiffer response to the friction drag changes the "
-                         "film slightly in the other direction. ")
-            else:
-                t.append(f"As in the paper, the viscoelastic cycle leaks more than the "
-                         f"hyperelastic one ({ve:.2f} against {he:.2f} mm^3), but by far "
-                         "less than the paper's factor, since the film is barely thicker "
-                         "(Fig. 9 above). ")
+            (ho, hb), (vo, vb) = tr["he"], tr["ve"]
+            more = vo > ho
+            mech = ", the mechanism the paper gives (a thicker film, Fig. 9)" if more else ""
+            t.append(f"The viscoelastic seal carries {word(more, 'more', 'less')} out than the "
+                     f"hyperelastic one ({vo:.1f} against {ho:.1f} mm^3)"
+                     f"{mech}, "
+                     f"but also {word(vb > hb, 'more', 'less')} back ({vb:.1f} against "
+                     f"{hb:.1f} mm^3), so its net leakage is {ve:.2f} against {he:.2f} mm^3: "
+                     f"{word(ve > he, 'larger, as in the paper, but by', 'smaller, unlike the paper, by')} "
+                     f"{100 * abs(ve / he - 1):.0f} %. The transports change by "
+                     f"{100 * (vo / ho - 1):+.1f} % (out) and {100 * (vb / hb - 1):+.1f} % "
+                     "(back), and the net, their small difference, by the balance of the two: "
+                     "the viscoelastic film gain is small here (Fig. 9), as a relaxed start "
+                     "holds it to what the stroke's loads do to a stiffer seal. ")
         if vf is not None and vs is not None:
+            (fo, fb), (so, sb) = tr["ve,sq,Φ"], tr["ve,sq"]
             t.append(f"Flow factors raise the net leakage to {vf:.1f} mm^3 "
-                     f"({vf / vs:.2f} times ve,sq), the largest of the four, as in the paper; "
-                     "they carry less out and much less back, so the ratio of outward to "
-                     "inward transport grows, the mechanism the paper names. ")
+                     f"({vf / vs:.2f} times ve,sq), the largest of the four, as in the paper. "
+                     f"They carry less out ({fo:.1f} against {so:.1f} mm^3: the shear-flow "
+                     f"term, Fig. 11) and still less back ({fb:.1f} against {sb:.1f}), so the "
+                     f"ratio of outward to inward transport grows ({fo / fb:.3f} against "
+                     f"{so / sb:.3f}), the mechanism the paper names. ")
             t.append(f"The absolute level is about {100 / max(vf, 1e-9):.0f} times below the "
-                     "paper's 100 mm^3: the net leakage is a small difference of two large "
-                     "transports (about 75 mm^3 each way), and (i) it is not yet "
-                     "mesh-converged (10.7 / 12.0 / 15.9 mm^3 on the 0.1 / 0.05 / 0.01 mm "
-                     "contact meshes for the hyperelastic cycle, still rising), (ii) the "
-                     "film is thinner than the paper's (Fig. 8), (iii) the flow factors are "
-                     "not the paper's, and (iv) the viscoelastic film gain the paper gets is "
-                     "absent (Fig. 9). ")
+                     "paper's 100 mm^3. The net leakage is a small difference of two large "
+                     f"transports (about {tr['he'][0]:.0f} mm^3 out and {tr['he'][1]:.0f} back), "
+                     "and (i) it is not yet mesh-converged (10.7 / 12.0 / 15.9 mm^3 on the "
+                     "0.1 / 0.05 / 0.01 mm contact meshes for the hyperelastic cycle, still "
+                     "rising), (ii) the film is about half the paper's (Fig. 8), (iii) the "
+                     "flow factors are not the paper's, and (iv) the viscoelastic film gain is "
+                     "a fraction of the paper's (Fig. 9). ")
         if qr:
             lo = min(a for a, _ in qr.values())
             hi = max(b for _, b in qr.values())
@@ -1153,13 +1193,15 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
                      f"paper's about -30 and +50 ({100 * lo / -30:.0f} % and "
                      f"{100 * hi / 50:.0f} % of them): the same shape, smaller, as the film "
                      "that carries the flow is thinner (Fig. 8). ")
-        if he is not None:
-            t.append(f"The IHL estimate ({net_ihl:.1f} mm^3 net, "
-                     f"{net_ihl / he:.2f} times the hyperelastic EHL cycle) assumes full film "
-                     "on both strokes (h* at 500 mm/s is above h_mix, at low speed it is not) "
-                     "and the dry contact pressure with p_in on the wetted flank; it carries "
-                     "more each way than EHL (the IHL row).")
-
+        o, i = ih["outstroke"], ih["instroke"]
+        t.append(f"The IHL estimate carries about as much each way as EHL, but its net "
+                 f"({net_ihl:.1f} mm^3) is the difference of two films read off the steepest "
+                 f"nodal gradients at the two edges of the dry contact (here h*_out = "
+                 f"{um(o['h_star'])} from w = {o['w']:.2f} MPa/mm at the sealed side, h*_in = "
+                 f"{um(i['h_star'])} from w = {i['w']:.2f} MPa/mm at the atmosphere side, at "
+                 "500 mm/s); each w grows as the mesh resolves the contact edge (Fig. 12), at "
+                 "its own rate, so the IHL net leakage, even its sign, is not mesh-resolved "
+                 "(mesh check).")
         return "".join(t)
 
     # ---- the whole report -----------------------------------------------------------------
@@ -1229,12 +1271,22 @@ Total wall time {total_wall / 60:.1f} min (sum of the runs below; one run at a t
         closing = """
 ## What is left
 
-- Mesh convergence of the film and the leakage (the paper's 0.01 mm mesh for every
-  comparison; this script takes the mesh sizes as one switch).
+- Mesh convergence of the film and the leakage: every comparison on the paper's 0.01 mm
+  contact mesh (`--mesh 0.01 0.05`; steps 1-2 alone take 10-20 min there, each
+  viscoelastic cycle much longer). The net leakage is still rising with refinement.
+- `sealts ihl` takes w as the largest nodal gradient of the dry pressure; at a dry O-ring
+  contact edge that gradient grows with refinement, so h* and above all the IHL net leakage
+  (a difference of two such films) depend on the mesh. A w from the inlet flank's
+  inflection point, or from a smoothed profile, would make the estimate mesh-independent.
+- The node-to-node ripple of h in full film (Fig. 12): a check of the control-volume
+  film's element flux against an alternating h, and perhaps a consistent (not symmetric)
+  coupling of h to the fluxes.
 - The paper's own flow factors for the turned rod (a `[film] flow_factors = "table"` CSV,
   once digitised) and the transverse Patir-Cheng rows (gamma < 1).
-- Why the paper's viscoelastic film is thicker: a viscoelastic start that is not relaxed
-  would test the explanation given under Fig. 9.
+- Why the paper's viscoelastic film gain is 0.15 um: a viscoelastic start that is not
+  relaxed would test the explanation given under Fig. 9.
+- Why the paper's fluid pressure peaks at 3-3.5 MPa, above this O-ring's whole dry contact
+  pressure (Fig. 8): the paper gives no dry contact pressure to compare.
 - The pressure-penetration front is not updated during the stroke (sealts' stroke keeps
   step 2's wetted surface).
 """
