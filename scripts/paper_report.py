@@ -919,9 +919,13 @@ published fits instead (`[film] flow_factors = "patir-cheng"`), for isotropic Ga
 roughness (Peklenik number gamma = 1), with the paper's composite roughness
 Rq = 2.15e-4 mm (Table 3) on the seal, so that the shear-flow term has the sign Eq. 13
 prints (h - Rq Phi_s). Below H = h/Rq = 0.5, where the fits end, sealts continues them C1
-and monotone to 0 (`sealts/film/flow_factors.py`). The paper's Phi_p also rises from 0 to
-1 over h = 0-5 um and its Phi_s is a bump, as here; the turned surface's transverse lay
-would be closer to gamma < 1 (dotted), which this report does not run.
+and monotone towards 0 (`sealts/film/flow_factors.py`). The paper's Phi_p rises from 0 at
+h = 0 to 1 at about 5 um and its Phi_s is a bump; here Phi_p rises from {pp[0]:.2f} at
+h = 0 (the C1 extension decays towards 0 only as h falls below 0, in asperity contact) to
+{float(ff.evaluate(np.array([1e-3]))[0][0]):.2f} at 1 um, and Phi_s peaks at
+{ps.max():.2f} at h = {h[int(np.argmax(ps))] * 1e3:.2f} um. The turned surface's transverse
+lay would be closer to gamma < 1 (dotted: Phi_p about 0 below H = 1, a larger Phi_s), which
+this report does not run.
 
 ![Fig. 10]({name10})
 
