@@ -413,9 +413,9 @@ class Report:
             if o.numbers:
                 self.others.append((mesh, o.numbers, other))
 
-    def across(self, *path, f=1.0, nd=3, unit=""):
-        """'a / b / c' of one number over this and the other meshes, coarse to fine, with
-        the contact sizes, or '' when no other mesh has it."""
+    def values_across(self, *path, f=1.0):
+        """[(h_contact, value)] of one number over this and the other meshes, coarse to
+        fine, where it exists."""
         cols = sorted([(tuple(self.mesh), self.numbers)] + [(m, n) for m, n, _ in
                                                             getattr(self, "others", [])],
                       key=lambda c: -c[0][0])
@@ -428,6 +428,12 @@ class Report:
                 vals.append((m[0], f * float(x)))
             except (KeyError, TypeError):
                 pass
+        return vals
+
+    def across(self, *path, f=1.0, nd=3, unit=""):
+        """'a / b / c' of one number over this and the other meshes, coarse to fine, with
+        the contact sizes, or '' when no other mesh has it."""
+        vals = self.values_across(*path, f=f)
         if len(vals) < 2:
             return ""
         return (" / ".join(f"{x:.{nd}f}" for _, x in vals) + (f" {unit}" if unit else "")
@@ -1052,6 +1058,14 @@ peak of a steady, smooth film). {self._ihl_check_text()}
         return (f"(Cross-check: the same estimate from the dry profile that the mount-only "
                 f"state run wrote gives h* within {max(self.ihl_check):.1e} of `sealts ihl`'s.)")
 
+    def _ripple_across(self):
+        vals = self.values_across("fig12", 500, "ripple", f=1e3)
+        if len(vals) < 2:
+            return ""
+        fades = vals[-1][1] < 0.5 * vals[0][1]
+        return (f"{word(fades, 'It fades as the mesh is refined', 'Over the meshes')} "
+                f"(+-{self.across('fig12', 500, 'ripple', f=1e3, unit='um')}). ")
+
     def ihl_dry(self, v):
         """(IHL summary, IHL profile, source) at speed v for p = 0: `sealts ihl`'s run when
         there is one, else the same estimate (:func:`sealts.film.ihl.ihl_estimate`) on the
@@ -1119,7 +1133,8 @@ peak of a steady, smooth film). {self._ihl_check_text()}
               "symmetric Gauss averages over each element, so an alternating h changes "
               "every element's flux alike, to second order, and leaves every nodal balance "
               "unchanged; nothing in the film resists it and only the seal's stiffness "
-              "limits it. The flow (an element mean) hardly notices. ")
+              "limits it. The flow (an element mean) hardly notices. "
+              + self._ripple_across())
         t += (f"At 100 mm/s IHL's h* = {um(n[100]['h_star'])} is far below h_mix: IHL assumes "
               "the fluid carries the whole contact pressure, while here the asperities carry "
               f"{100 * n[100]['share']:.0f} % of it, so the fluid's pressure profile is flatter "
