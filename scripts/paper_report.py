@@ -1376,13 +1376,16 @@ Total wall time {total_wall / 60:.1f} min (sum of the runs below; one run at a t
 - Mesh convergence of the film and the leakage: every comparison on the paper's 0.01 mm
   contact mesh (`--mesh 0.01 0.05`; steps 1-2 alone take 10-20 min there, each
   viscoelastic cycle much longer). The net leakage is still rising with refinement.
-- `sealts ihl` takes w as the largest nodal gradient of the dry pressure; at a dry O-ring
-  contact edge that gradient grows with refinement, so h* and above all the IHL net leakage
-  (a difference of two such films) depend on the mesh. A w from the inlet flank's
-  inflection point, or from a smoothed profile, would make the estimate mesh-independent.
-- The node-to-node ripple of h in full film (Fig. 12): a check of the control-volume
-  film's element flux against an alternating h, and perhaps a consistent (not symmetric)
-  coupling of h to the fluxes.
+- `sealts ihl` takes w as the largest nodal gradient of the dry pressure. For this O-ring
+  that is the contact edge, where the dry pressure rises almost like a square root and is
+  carried by the asperity law at gaps (about 0.55-1 um) as large as the film itself, so
+  IHL's premise (fluid pressure = dry pressure) fails just where it reads w; the gradient
+  grows with refinement, and h* and above all the IHL net leakage (a difference of two such
+  films) depend on the mesh. Where to read w (past the edge, on a fitted flank) is a
+  modelling decision for `sealts ihl`.
+- The node-to-node ripple of h in full film on the coarser meshes (Fig. 12; gone on the
+  0.01 mm mesh): a check of the control-volume film's element flux against an alternating
+  h, which it does not see to first order.
 - The paper's own flow factors for the turned rod (a `[film] flow_factors = "table"` CSV,
   once digitised) and the transverse Patir-Cheng rows (gamma < 1).
 - Why the paper's viscoelastic film gain is 0.15 um: a viscoelastic start that is not
