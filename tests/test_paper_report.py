@@ -24,7 +24,8 @@ def report():
 def test_paper_scenes_load(path):
     s = load_scene(path)
     assert s.model == "seal" and s.name == path.stem
-    assert (s.mesh.h_contact, s.mesh.h_bulk) == (0.05, 0.2)
+    default = load_scene(CONFIGS / "oring_stroke.toml").mesh      # the report's default mesh
+    assert (s.mesh.h_contact, s.mesh.h_bulk) == (default.h_contact, default.h_bulk)
 
 
 def test_every_run_names_a_scene_and_an_earlier_state(report):
@@ -75,3 +76,9 @@ def test_ihl_film_inverts_the_reynolds_gradient(report):
     k = int(np.argmax(g))
     got = report.ihl_film(y, p, g, v, h_star, 0.5 * (y[k] + y[k + 1]))
     assert np.allclose(got, h, rtol=1e-9)
+
+
+def test_report_default_mesh_is_the_shipped_cycle_mesh(report):
+    """The report runs on the mesh whose leakage is mesh-converged, the shipped cycle's."""
+    m = load_scene(CONFIGS / "oring_stroke.toml").mesh
+    assert report.MESHES["default"] == (m.h_contact, m.h_bulk)
