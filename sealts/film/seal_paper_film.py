@@ -9,30 +9,49 @@ the paper's numbering, ordered by reference z)
     h_i = R_i + u_r,i - r(t)                                      (Eq. 18)
     dh_i/dt = du_r,i/dt - dr/dt                                   (Eq. 26, from the TS's U')
 
-and, with h_eff the gap regularisation (:mod:`sealts.film.gap`), k_i = Phi_p h_eff^3 /
-(12 eta) and c_i = (v/2)(h_eff - Rq Phi_s) at h_i (:func:`sealts.film.reynolds_fv.
-conductance`), the hydrostatic plus hydrodynamic gradient of Eq. 17 + Eq. 24 (Eq. 35) is
+With h_eff the gap regularisation (:mod:`sealts.film.gap`), k = Phi_p h_eff^3 / (12 eta) and
+c = (v/2)(h_eff - Rq Phi_s) at h_i (:func:`sealts.film.reynolds_fv.conductance`), the
+paper's hydrostatic (Eq. 17) and hydrodynamic (Eq. 24) gradients are
 
-    g_i = (dp/dy)_i = (c_i - q_i) / k_i,
-    q_i = -c0 + c(h0) - S(y_i),      S(y) = int_{y0}^{y} dh_eff/dt dy        (Eq. 40)
+    g_hs,i = c0 / k_i,
+    g_hd,i = (c_i - c(h0) + S(y_i) - S(y0)) / k_i,   S(y) = int_{y_1}^{y} dh_eff/dt dy,
 
-(q_i the flow per unit circumference through y_i; for a uniform squeeze S = (dh/dt)(y - y0),
-the paper's 2 (du/dt)(y - y0) in Eq. 24). c0 (mm^2/s) and y0 (mm) are two global unknowns,
-h0 = h(y0) linear inside y0's current element, Phi_s0 = Phi_s(h0); dh_eff/dt is linear
-between nodes, so S(y_i) is the trapezoid sum of the nodal rates M_k dh_eff_k/dt (the control
-volumes of the default scheme) and S from y_1 to y0 the exact integral of the linear rate.
+(for a uniform squeeze S(y_i) - S(y0) = (dh/dt)(y_i - y0), the 2 (du/dt)(y - y0) of Eq. 24
+with its 6 eta, not 12 eta, in front), g_i = g_hs,i + g_hd,i (Eq. 35), and the flow per unit
+circumference through y_i is q_i = c_i - k_i g_i = -c0 + c(h0) + S(y0) - S(y_i) (Eq. 40).
+dh_eff/dt is linear between nodes, so S(y_i) is the trapezoid sum, the nodal rates times the
+default scheme's control volumes.
 
-Rows (the film's own: the chain's pressures, then c0 and y0):
+**The second integration constant.** g_hd, q, p and every load depend on y0 only through
+qd = c(h0) + S(y0), the hydrodynamic flow at y0 (Eq. 40's (v/2)(h0 - Rq Phi_s0) plus the
+squeeze integral). This term carries qd (mm^2/s) as the unknown instead of y0 (mm):
+
+    g_hd,i = (c_i + S(y_i) - qd) / k_i,    q_i = -c0 + qd - S(y_i).
+
+The discrete pressures are the paper's: for the solution's qd there is a y0 inside the
+chain with c(h(y0)) + S(y0) = qd (qd is a positive weighted mean of the nodal c_i + S_i,
+the y0 row below, and c(h(y)) + S(y) is continuous along the chain), and every such y0 gives
+the same rows. :meth:`SealPaperFilmTerm.zero_gradient_points` returns them. With y0 itself
+as the unknown (commit "literally with c0 and y0") the coupled stroke could not start: y0 is
+defined only up to the roots of that equation (two on a converging-diverging gap: the
+pressure's maximum and its minimum, and Newton hopped between them from step to step), and
+at v = 0 with dh/dt = 0 (the hydrostatic start, and nearly so at the first steps of a
+stroke) every y0 solves it, so its row's derivative vanishes while its U' derivative (TS
+shift) does not: Newton sent y0 off the chain and the first step of the paper's cycle
+failed at t = 9e-5 s. qd enters its row linearly with the coefficient -sum W_k / k_k, so
+the row is regular at every state, qd = 0 at the hydrostatic start, and it is continuous
+in time.
+
+Rows (the film's own: the chain's pressures, then c0 and qd), all pressure differences in
+MPa (``set_row_scale`` does nothing):
 
 * p_1 = p_first (p_in at the pressurised end, ``pressurised_end = "min_z"``; p_out else);
 * p_i - p_{i-1} - dy_i [alpha g_{i-1} + (1 - alpha) g_i] = 0,  dy_i = y_i - y_{i-1}  (Eq. 27);
-* Eq. 28 (p_n = p_last) split as in :class:`sealts.film.paper_scheme.PaperScheme`:
+* Eq. 28 (p_n = p_last) split as in :class:`sealts.film.paper_scheme.PaperScheme`: the
+  hydrostatic integral spans p_first -> p_last and the hydrodynamic one 0 -> 0,
   c0 row  sum_i dy_i [alpha g_hs,i-1 + (1 - alpha) g_hs,i] - (p_last - p_first) = 0,
-  y0 row  sum_i dy_i [alpha g_hd,i-1 + (1 - alpha) g_hd,i] + Y0_ANCHOR (y0 - y_mid) = 0,
-  g_hs = c0 / k (Eq. 17), g_hd = g - g_hs (Eq. 24), y_mid = (y_1 + y_n)/2 of the current
-  chain (the anchor keeps y0 defined when v = 0 and dh/dt = 0, the hydrostatic start).
-
-All rows are pressure differences (MPa): no row scale (``set_row_scale`` does nothing).
+  qd row  sum_i dy_i [alpha g_hd,i-1 + (1 - alpha) g_hd,i] = 0
+  (PaperScheme's anchor of y0 is not needed: qd = 0 solves the qd row without hydrodynamics).
 
 Loads on the seal, as :class:`SealFilmTerm` (the same functions for the radial and
 surface-normal parts): F_r,i = p_i A L_i (Eq. 29-31) on u_r; with ``surface_normal``
@@ -42,27 +61,23 @@ F_z,i = -p_i A (r_{i+1} - r_{i-1})/2 on u_z; with ``shear`` the fluid shear (Eq.
 
 with the scheme's own gradient g_i and the beta-weighted squeeze-rate gradient of Eq. 33.
 
-Flows (Eq. 40-41): q at the chain's ends, q_1 = -c0 + c(h0) + S(y_1)... i.e. q(y) above at
-y_1 and y_n; Q_in = A q_1, Q_out = A q_n for a film pressurised at min z (ends and signs swap
-for max z). Q_in - Q_out = A sum_k M_k dh_eff_k/dt exactly, as in the default scheme;
-:class:`PaperLeakageTerm` integrates them, dV/dt = Q (Eq. 42).
+Flows (Eq. 40-41): Q_in = A q_1, Q_out = A q_n for a film pressurised at min z (ends and
+signs swap for max z); Q_in - Q_out = A S(y_n) = A sum_k M_k dh_eff_k/dt exactly, as in the
+default scheme. :class:`PaperLeakageTerm` integrates them, dV/dt = Q (Eq. 42).
 
-Exact Jacobian. Every g_i depends on c0, y0, the gaps at y0's element (through h0) and on
-every squeeze rate and node position between y0 and y_i (through S), so the pressure rows,
-the c0 and y0 rows and the shear rows are dense over the chain's u_r and u_z; the pattern is
-these blocks in full (y0's element moves). With hde_k = h_eff'(h_k) dh_k/dt:
+Exact Jacobian. q_i depends on c0, qd and, through S(y_i), on every squeeze rate and node
+position from y_1 to y_i; so the pressure rows, the c0 and qd rows and the shear rows are
+dense over the chain's u_r and u_z (the pattern holds these blocks in full). With hde_k =
+h_eff'(h_k) dh_k/dt and M_k^(i) the trapezoid weight of node k in S(y_i):
 
-* dq_i/dc0 = -1, dq_i/dy0 = c'(h0) dh0/dy0 + hde(y0) (the element's slope and rate);
-* dq_i/dh_j, dq_i/dh_j+1 = c'(h0) (1 - t0), c'(h0) t0 (j y0's element, t0 its local
-  coordinate), dq_i/dy_j, dy_j+1 = -c'(h0) slope (1 - t0), -c'(h0) slope t0;
-* dq_i/dhde_k = -(dS_i/dhde_k - dS_0/dhde_k), the trapezoid weights from y0 to y_i, and
-  dq_i/dy_k likewise through the element lengths (and S_0 through y0's element ends);
+* dq_i/dc0 = -1, dq_i/dqd = 1, dq_i/dhde_k = -M_k^(i), dq_i/dy_k = -dS_i/dy_k (the element
+  lengths y_k - y_k-1 carry the mean rate of their element);
 * hde_k depends on h_k (h_eff'' in the floor range) and on dh_k/dt = du_r,k/dt: the TS
   ``shift`` times dq_i/dhde_k h_eff'(h_k) on the u_r columns;
 * dg_i = (d(1/k_i)/dh_i (c_i - q_i) + c'_i / k_i) dh_i - dq_i / k_i;
-* Eq. 27's dy_i on u_z,i and u_z,i-1; the anchor's y_mid on u_z of the ends.
+* Eq. 27's dy_i on u_z,i and u_z,i-1.
 
-The kernels (:func:`chain_flow`, :func:`chain_flow_derivatives`) are numba with
+The kernels (:func:`chain_flow`, :func:`squeeze_integral_derivatives`) are numba with
 ``cache=True``; the assembly is vectorised numpy over the chain.
 """
 import numba
@@ -72,19 +87,17 @@ from ..mesh.layout import vertex_dofs
 from ..problem import Term, of_time
 from .flow_factors import FlowFactors
 from .gap import h_eff
-from .paper_scheme import Y0_ANCHOR
 from .reynolds_fv import conductance
 from .seal_film import SealFilmTerm
 
 
 @numba.njit(cache=True)
-def chain_flow(y, h, hd, c0, y0, v, eta, h_floor, model, par, th, tpp, tps):
+def chain_flow(y, h, hd, c0, qd, v, eta, h_floor, model, par, th, tpp, tps):
     """Nodal flows q_i, gradients g_i = (c_i - q_i)/k_i and what their derivatives need.
 
-    Returns (he, dhe, w, dw, cv, dcv, hde, dhde, q, g, j, sigma, L, slope, dcv0, hd0) with
-    w = 1/k, dw = d(1/k)/dh, cv = c/v, dcv = d(c/v)/dh, hde = dh_eff/dt, dhde = d(hde)/dh;
-    y0's element j (clamped to the chain, y0 extrapolated linearly beyond its ends), sigma =
-    y0 - y_j, L its length, slope its dh/dy, dcv0 = d(c/v)/dh at h0, hd0 = hde at y0."""
+    Returns (he, dhe, w, dw, cv, dcv, hde, dhde, S, q, g): h_eff and h_eff', w = 1/k and
+    dw = d(1/k)/dh, cv = c/v and dcv = d(c/v)/dh, hde = dh_eff/dt and dhde = d(hde)/dh, the
+    squeeze integral S_i = int_{y_1}^{y_i} hde dy (trapezoids), q_i = -c0 + qd - S_i."""
     n = y.size
     he = np.empty(n)
     dhe = np.empty(n)
@@ -102,80 +115,45 @@ def chain_flow(y, h, hd, c0, y0, v, eta, h_floor, model, par, th, tpp, tps):
             d2 = dhe[i] / h_floor                     # h_eff'' in the floor range
         hde[i] = dhe[i] * hd[i]
         dhde[i] = d2 * hd[i]
-    s = np.empty(n)                                   # int_{y_1}^{y_i} hde, trapezoids
-    s[0] = 0.0
-    for i in range(1, n):
-        s[i] = s[i - 1] + 0.5 * (y[i] - y[i - 1]) * (hde[i - 1] + hde[i])
-    j = np.searchsorted(y, y0) - 1
-    j = min(max(j, 0), n - 2)
-    L = y[j + 1] - y[j]
-    sigma = y0 - y[j]
-    slope = (h[j + 1] - h[j]) / L
-    h0raw = h[j] + sigma * slope
-    _, _, cv0, dcv0 = conductance(h0raw, eta, h_floor, model, par, th, tpp, tps)
-    delta = hde[j + 1] - hde[j]
-    hd0 = hde[j] + sigma * delta / L
-    s0 = s[j] + sigma * hde[j] + 0.5 * sigma * sigma * delta / L
+    S = np.empty(n)
     q = np.empty(n)
     g = np.empty(n)
+    S[0] = 0.0
+    for i in range(1, n):
+        S[i] = S[i - 1] + 0.5 * (y[i] - y[i - 1]) * (hde[i - 1] + hde[i])
     for i in range(n):
-        q[i] = -c0 + v * cv0 - (s[i] - s0)
+        q[i] = -c0 + qd - S[i]
         g[i] = w[i] * (v * cv[i] - q[i])
-    return he, dhe, w, dw, cv, dcv, hde, dhde, q, g, j, sigma, L, slope, dcv0, hd0
+    return he, dhe, w, dw, cv, dcv, hde, dhde, S, q, g
 
 
 @numba.njit(cache=True)
-def chain_flow_derivatives(y, hde, dhde, dhe, j, sigma, L, slope, dcv0, hd0, v):
-    """dq_i/dh_k, dq_i/d(dh_k/dt), dq_i/dy_k (n x n each) and dq_i/dy0 (one number, the same
-    for every i) of :func:`chain_flow`'s q."""
+def squeeze_integral_derivatives(y, hde):
+    """dS_i/dhde_k and dS_i/dy_k (n x n, lower triangular) of :func:`chain_flow`'s S: row
+    i is row i-1 plus the trapezoid of element (i-1, i)."""
     n = y.size
-    # Se[i, k] = dS(y_i)/dhde_k, Sy[i, k] = dS(y_i)/dy_k, S from y_1: row i is row i-1 plus
-    # the trapezoid of element (i-1, i)
     Se = np.zeros((n, n))
     Sy = np.zeros((n, n))
     for i in range(1, n):
         for k in range(i):
             Se[i, k] = Se[i - 1, k]
             Sy[i, k] = Sy[i - 1, k]
-        Le = y[i] - y[i - 1]
+        half = 0.5 * (y[i] - y[i - 1])
         a = 0.5 * (hde[i - 1] + hde[i])
-        Se[i, i - 1] += 0.5 * Le
-        Se[i, i] += 0.5 * Le
+        Se[i, i - 1] += half
+        Se[i, i] += half
         Sy[i, i] += a
         Sy[i, i - 1] -= a
-    # S from y_1 to y0: S_j plus the integral of the linear rate over [y_j, y0]
-    s0e = Se[j].copy()
-    s0y = Sy[j].copy()
-    delta = hde[j + 1] - hde[j]
-    s0e[j] += sigma - 0.5 * sigma * sigma / L
-    s0e[j + 1] += 0.5 * sigma * sigma / L
-    s0y[j] += -hd0 + 0.5 * sigma * sigma * delta / (L * L)
-    s0y[j + 1] += -0.5 * sigma * sigma * delta / (L * L)
-    t0 = sigma / L
-    dh = np.empty((n, n))
-    dhd = np.empty((n, n))
-    dy = np.empty((n, n))
-    for i in range(n):
-        for k in range(n):
-            de = s0e[k] - Se[i, k]                    # dq_i/dhde_k
-            dh[i, k] = de * dhde[k]
-            dhd[i, k] = de * dhe[k]
-            dy[i, k] = s0y[k] - Sy[i, k]
-        # c(h0), h0 = (1 - t0) h_j + t0 h_j+1 over the current element
-        dh[i, j] += v * dcv0 * (1.0 - t0)
-        dh[i, j + 1] += v * dcv0 * t0
-        dy[i, j] -= v * dcv0 * slope * (1.0 - t0)
-        dy[i, j + 1] -= v * dcv0 * slope * t0
-    return dh, dhd, dy, v * dcv0 * slope + hd0
+    return Se, Sy
 
 
 class SealPaperFilmTerm(Term):
     """The paper's scheme (Eq. 15-28) on the seal's rod-side chain; a drop-in for
     :class:`sealts.film.seal_film.SealFilmTerm` in the stroke (module docstring).
 
-    Owns the rows ``pdofs`` (film pressures in chain order) and ``xdofs`` = (c0, y0); adds to
+    Owns the rows ``pdofs`` (film pressures in chain order) and ``xdofs`` = (c0, qd); adds to
     the u_r rows of the chain nodes and their u_z rows (``surface_normal``, ``shear``).
-    Columns: the chain's film pressures, u_r and u_z, and c0, y0.
+    Columns: the chain's film pressures, u_r and u_z, and c0, qd.
     """
 
     name = "paper"
@@ -190,9 +168,9 @@ class SealPaperFilmTerm(Term):
     def __init__(self, X, chain, pdofs, xdofs, r_rod, v, eta, p_in, p_out, area, ff=None,
                  h_floor=1e-5, squeeze=True, pressurised_end="min_z", udofs=None,
                  rod_rate=None, surface_normal=False, shear=True, alpha=0.5, beta=0.5):
-        """Arguments as :class:`SealFilmTerm`'s (``h_ref`` has no use: the rows are in MPa),
-        plus ``xdofs``: the dofs of c0 (mm^2/s) and y0 (mm), and ``alpha``: the gradient
-        weight of Eq. 27."""
+        """Arguments as :class:`SealFilmTerm`'s (no ``h_ref``: the rows are in MPa), plus
+        ``xdofs``: the dofs of the integration constants c0 and qd (both mm^2/s), and
+        ``alpha``: the gradient weight of Eq. 27."""
         if pressurised_end not in ("min_z", "max_z"):
             raise ValueError("pressurised_end must be 'min_z' or 'max_z', "
                              f"got {pressurised_end!r}")
@@ -208,8 +186,8 @@ class SealPaperFilmTerm(Term):
             raise ValueError("pdofs must give one film-pressure dof per chain node")
         self.xd = np.asarray(xdofs, np.int64)
         if self.xd.shape != (2,):
-            raise ValueError("xdofs must be the two dofs (c0, y0)")
-        self.cd, self.yd = int(self.xd[0]), int(self.xd[1])
+            raise ValueError("xdofs must be the two dofs (c0, qd)")
+        self.cd, self.qd = int(self.xd[0]), int(self.xd[1])
         self.R, self.Z = self.X[self.chain, 0], self.X[self.chain, 1]
         self.r_rod, self.v = r_rod, of_time(v)
         self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
@@ -225,10 +203,10 @@ class SealPaperFilmTerm(Term):
         self.hi = np.concatenate([np.arange(1, m), [m - 1]])
 
         ur, uz, pd = self.ur, self.uz, self.pd
-        # the dense columns: c0, y0, then u_r and u_z of the chain
+        # the dense columns: c0, qd, then u_r and u_z of the chain
         self.dense_cols = np.concatenate([self.xd, ur, uz])
         nb = self.dense_cols.size
-        dense_rows = np.concatenate([pd[1:], self.xd])      # Eq. 27 rows, then c0 and y0
+        dense_rows = np.concatenate([pd[1:], self.xd])      # Eq. 27 rows, then c0 and qd
         rows = [[pd[0]], pd[1:], pd[1:], np.repeat(dense_rows, nb), ur, ur, ur]
         cols = [[pd[0]], pd[1:], pd[:-1], np.tile(self.dense_cols, m + 1), pd, uz[self.hi],
                 uz[self.lo]]
@@ -248,28 +226,78 @@ class SealPaperFilmTerm(Term):
                                      [1.0]])
 
     # ---- the scheme on the chain ---------------------------------------------------------
-    def _flow(self, t, u, udot):
+    def _flow(self, t, u, udot, closed=False):
+        """The chain's state and :func:`chain_flow` at the unknowns c0, qd, or (``closed``)
+        at the constants that solve their rows at this (u, udot), :meth:`constants`."""
         y, h, hd, p = self.film(t, u, udot)
         v = self.v(t)
-        k = chain_flow(y, h, hd, float(u[self.cd]), float(u[self.yd]), v, self.eta,
-                       self.h_floor, *self._ffargs())
+        c0, qd = self.constants(t, u, udot) if closed else (u[self.cd], u[self.qd])
+        k = chain_flow(y, h, hd, float(c0), float(qd), v, self.eta, self.h_floor,
+                       *self._ffargs())
         return y, h, hd, p, v, k
+
+    def constants(self, t, u, udot=None):
+        """(c0, qd) solving the c0 and qd rows at this (u, udot): they do not involve the
+        pressures and are linear in their constant, so with W = sum_i dy_i [alpha / k_i-1 +
+        (1 - alpha) / k_i], c0 = (p_last - p_first) / W and qd = sum_i dy_i [alpha (c_i-1 +
+        S_i-1) / k_i-1 + (1 - alpha) (c_i + S_i) / k_i] / W. At the TS's U' they are the
+        unknowns (to round-off); the outputs use them, so that a U' estimated after the step
+        (the stroke's difference quotient) gives flows and a shear consistent with it: g_i
+        amplifies a mismatch of qd and S(y_i) by 1/k_i, up to 1e3 MPa s/mm^3 at h = 0.5 um."""
+        y, h, hd, _ = self.film(t, u, udot)
+        v = self.v(t)
+        k = chain_flow(y, h, hd, 0.0, 0.0, v, self.eta, self.h_floor, *self._ffargs())
+        w, g = k[2], k[10]                        # g = (c + S) / k at c0 = qd = 0
+        Le = np.diff(y)
+        W = self._weighted(Le, w).sum()
+        return (self.p_last(t) - self.p_first(t)) / W, self._weighted(Le, g).sum() / W
 
     def set_row_scale(self, t, u, udot=None):
         """The rows are pressure differences in MPa already."""
 
+    def initial_constants(self, t, u):
+        """(c0, qd) for a start: no flow (the c0 row is linear in c0, the qd row in qd)."""
+        return 0.0, 0.0
+
+    # outputs: at the constants that solve their rows at (u, udot), see constants()
     def pressure_gradient(self, t, u, udot=None):
         """The scheme's nodal dp/dy (MPa/mm), g_i of Eq. 17 + Eq. 24."""
-        return self._flow(t, u, udot)[5][9]
+        return self._flow(t, u, udot, closed=True)[5][10]
 
     def nodal_flows(self, t, u, udot=None):
         """q(y_i) per unit circumference (mm^2/s, +y), Eq. 40 with the squeeze integral."""
-        return self._flow(t, u, udot)[5][8]
+        return self._flow(t, u, udot, closed=True)[5][9]
 
-    def flows(self, t, u, udot=None):
+    def zero_gradient_points(self, t, u, udot=None):
+        """The paper's y0 for this state (mm): every y on the chain where the hydrodynamic
+        gradient g_hd vanishes, c(h(y)) + S(y) = qd with h and dh_eff/dt linear between
+        nodes (S then quadratic; solved per element). Usually two on a converging-diverging
+        gap (the maximum and minimum of the hydrodynamic pressure), none without sliding
+        and squeeze unless all of the chain qualifies (then empty too)."""
+        y, h, hd, p, v, k = self._flow(t, u, udot, closed=True)
+        cv, hde, S = k[4], k[6], k[8]
+        qd = self.constants(t, u, udot)[1]
+        f = v * cv + S - qd
+        out = []
+        for e in np.nonzero(np.sign(f[:-1]) * np.sign(f[1:]) <= 0)[0]:
+            if f[e] == 0.0 and f[e + 1] == 0.0:
+                continue
+            # c linear (h linear, c ~ h away from the floor), S quadratic in the element
+            L = y[e + 1] - y[e]
+            a = 0.5 * (hde[e + 1] - hde[e]) / L
+            b = hde[e] + v * (cv[e + 1] - cv[e]) / L
+            c = f[e]
+            roots = np.roots([a, b, c]) if a != 0.0 else np.array([-c / b])
+            roots = roots[np.isreal(roots)].real
+            roots = roots[(roots >= -1e-12 * L) & (roots <= L * (1 + 1e-12))]
+            out.extend(y[e] + roots[:1])
+        return np.unique(np.array(out, float))
+
+    def flows(self, t, u, udot=None, closed=True):
         """(Q_in, Q_out) in mm^3/s: into the film at the pressurised end, out at the other
-        (Eq. 41); Q_in - Q_out = A sum_k M_k dh_eff_k/dt."""
-        q = self.nodal_flows(t, u, udot)
+        (Eq. 41); Q_in - Q_out = A sum_k M_k dh_eff_k/dt. ``closed=False``: at the
+        unknowns c0, qd (the leakage rows)."""
+        q = self._flow(t, u, udot, closed=closed)[5][9]
         if self.pressurised_end == "min_z":
             return self.area * q[0], self.area * q[-1]
         return -self.area * q[-1], -self.area * q[0]
@@ -290,26 +318,22 @@ class SealPaperFilmTerm(Term):
     def shear_forces(self, t, u, udot=None):
         """Axial fluid shear force on each chain node (N, +y), Eq. 32-34 with the scheme's
         gradient (computed whether or not ``shear`` puts it into the residual)."""
-        y, h, hd, p, v, k = self._flow(t, u, udot)
-        return self._tau(v, k[0], k[9], hd, y)[0] * self.area * self.lengths(y)
+        y, h, hd, p, v, k = self._flow(t, u, udot, closed=True)
+        return self._tau(v, k[0], k[10], hd, y)[0] * self.area * self.lengths(y)
 
     # ---- Term interface ------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
         y, h, hd, p, v, k = self._flow(t, u, udot)
-        he, w, g = k[0], k[2], k[9]
-        c0, y0 = u[self.cd], u[self.yd]
+        he, w, g = k[0], k[2], k[10]
         Le = np.diff(y)
         p_first, p_last = self.p_first(t), self.p_last(t)
         r = np.empty(self.m)
         r[0] = p[0] - p_first
         r[1:] = p[1:] - p[:-1] - self._weighted(Le, g)
-        ghs = w * c0
-        r_c = self._weighted(Le, ghs).sum() - (p_last - p_first)
-        r_y = (self._weighted(Le, g - ghs).sum()
-               + Y0_ANCHOR * (y0 - 0.5 * (y[0] + y[-1])))
+        ghs = w * u[self.cd]
         np.add.at(f, self.pd, r)
-        f[self.cd] += r_c
-        f[self.yd] += r_y
+        f[self.cd] += self._weighted(Le, ghs).sum() - (p_last - p_first)
+        f[self.qd] += self._weighted(Le, g - ghs).sum()
         np.subtract.at(f, self.ur, self.forces(t, u))
         if self.surface_normal:
             np.subtract.at(f, self.uz, self.axial_forces(t, u))
@@ -318,18 +342,18 @@ class SealPaperFilmTerm(Term):
             np.subtract.at(f, self.uz, F)
 
     def derivatives(self, t, u, udot, shift):
-        """The state and d(q_i, g_i)/d(dense columns) + shift d/dU' (n x (2n + 2) each)."""
+        """The state, and dq_i, dg_i by the dense columns (c0, qd, u_r, u_z of the chain)
+        plus shift times their derivatives by U' (n x (2n + 2) each)."""
         y, h, hd, p, v, k = self._flow(t, u, udot)
-        he, dhe, w, dw, cv, dcv, hde, dhde, q, g, j, sigma, L, slope, dcv0, hd0 = k
-        dh, dhd, dy, dq_dy0 = chain_flow_derivatives(y, hde, dhde, dhe, j, sigma, L, slope,
-                                                     dcv0, hd0, v)
+        he, dhe, w, dw, cv, dcv, hde, dhde, S, q, g = k
+        Se, Sy = squeeze_integral_derivatives(y, hde)
         m = self.m
         shift_hd = shift if (self.squeeze and udot is not None) else 0.0
         dq = np.empty((m, 2 * m + 2))
         dq[:, 0] = -1.0
-        dq[:, 1] = dq_dy0
-        dq[:, 2:m + 2] = dh + shift_hd * dhd
-        dq[:, m + 2:] = dy
+        dq[:, 1] = 1.0
+        dq[:, 2:m + 2] = -Se * (dhde + shift_hd * dhe)
+        dq[:, m + 2:] = -Sy
         dg = -w[:, None] * dq
         i = np.arange(m)
         dg[i, 2 + i] += dw * (v * cv - q) + w * v * dcv
@@ -337,7 +361,7 @@ class SealPaperFilmTerm(Term):
 
     def jacobian_values(self, t, u, udot, shift):
         (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
-        he, dhe, w, dw, g = k[0], k[1], k[2], k[3], k[9]
+        he, dhe, w, dw, g = k[0], k[1], k[2], k[3], k[10]
         m, A, al = self.m, self.area, self.alpha
         c0 = u[self.cd]
         Le = np.diff(y)
@@ -349,23 +373,20 @@ class SealPaperFilmTerm(Term):
         b = np.arange(m - 1)
         rows27[b, uzc[1:]] -= E
         rows27[b, uzc[:-1]] += E
-        # c0 and y0 rows: g_hs = w c0 depends on c0 and h only
+        # c0 and qd rows: g_hs = w c0 depends on c0 and h only
         dghs = np.zeros_like(dg)
         dghs[:, 0] = w
         dghs[i, 2 + i] = c0 * dw
         ghs = w * c0
         Ehs = al * ghs[:-1] + (1.0 - al) * ghs[1:]
         row_c = self._weighted(Le, dghs).sum(0)
-        row_y = self._weighted(Le, dg - dghs).sum(0)
+        row_q = self._weighted(Le, dg - dghs).sum(0)
         np.add.at(row_c, uzc[1:], Ehs)
         np.add.at(row_c, uzc[:-1], -Ehs)
-        np.add.at(row_y, uzc[1:], E - Ehs)
-        np.add.at(row_y, uzc[:-1], -(E - Ehs))
-        row_y[1] += Y0_ANCHOR
-        row_y[uzc[0]] -= 0.5 * Y0_ANCHOR
-        row_y[uzc[-1]] -= 0.5 * Y0_ANCHOR
+        np.add.at(row_q, uzc[1:], E - Ehs)
+        np.add.at(row_q, uzc[:-1], -(E - Ehs))
         Li = self.lengths(y)
-        vals = [[1.0], np.ones(m - 1), -np.ones(m - 1), rows27.ravel(), row_c, row_y,
+        vals = [[1.0], np.ones(m - 1), -np.ones(m - 1), rows27.ravel(), row_c, row_q,
                 -A * Li, -0.5 * A * p, 0.5 * A * p]
         if self.surface_normal:
             dr = self.lengths(self.R + u[self.ur])
@@ -393,9 +414,9 @@ class PaperLeakageTerm(Term):
         dV_in/dt = Q_in,   dV_out/dt = Q_out,
 
     at ``vdofs`` = (V_in, V_out), Q from the scheme's q at the chain's ends (Eq. 40), as
-    :class:`sealts.film.seal_film.LeakageTerm` for the default scheme. q_1 and q_n depend on
-    c0, y0 and (through the squeeze integral from y0) on every u_r, u_r' and u_z of the
-    chain: two dense rows, exact with the TS shift."""
+    :class:`sealts.film.seal_film.LeakageTerm` for the default scheme. q_1 = -c0 + qd
+    depends on the constants only, q_n = q_1 - S(y_n) also (through the squeeze integral)
+    on every u_r, u_r' and u_z of the chain: exact with the TS shift."""
 
     def __init__(self, film, vdofs):
         self.film = film
@@ -410,11 +431,11 @@ class PaperLeakageTerm(Term):
             self._ends = ((-1, -1.0), (0, -1.0))
 
     def flows(self, t, u, udot=None):
-        """(Q_in, Q_out) in mm^3/s."""
+        """(Q_in, Q_out) in mm^3/s (output: :meth:`SealPaperFilmTerm.flows`)."""
         return self.film.flows(t, u, udot)
 
     def add_residual(self, t, u, udot, f):
-        q_in, q_out = self.flows(t, u, udot)
+        q_in, q_out = self.film.flows(t, u, udot, closed=False)
         f[self.vd[0]] += udot[self.vd[0]] - q_in
         f[self.vd[1]] += udot[self.vd[1]] - q_out
 
