@@ -358,6 +358,8 @@ class Problem:
         ts.setExactFinalTime(PETSc.TS.ExactFinalTime.MATCHSTEP)
         ts.setMaxSNESFailures(-1)  # a failed Newton solve rejects the step; TSAdapt retries
         ts.setErrorIfStepFails(False)  # report a TS that gives up through its reason
+        if np.ndim(atol):        # one per unknown, full and in serial order
+            atol = self._owned(atol)
         ts.setTolerances(rtol=rtol, atol=atol)
         self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
         # a run whose steps shrink below 1e-12 of its span fails instead of crawling on
@@ -405,7 +407,9 @@ class Problem:
 
         ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0); a
         SolveError it raises ends the run with its own message;
-        ``on_stop(t, u)`` at each time in ``stops`` (hit exactly) and at t_end.
+        ``on_stop(t, u)`` at each time in ``stops`` (hit exactly) and at t_end. ``atol``: a
+        number, or one per unknown (full, serial order; a huge one leaves that unknown out of
+        the local error estimate).
         """
         last = [None]
         raised = []
