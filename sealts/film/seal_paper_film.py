@@ -147,6 +147,44 @@ def squeeze_integral_derivatives(y, hde):
     return Se, Sy
 
 
+@numba.njit(cache=True)
+def zero_gradient_roots(y, h, hde, S, qd, v, eta, h_floor, model, par, th, tpp, tps):
+    """The y where f(y) = v (c/v)(h(y)) + S(y) - qd = 0, h and hde linear in each element, one
+    per element whose end values differ in sign (bisection)."""
+    n = y.size
+    out = np.empty(n)
+    k = 0
+    f = np.empty(n)
+    for i in range(n):
+        f[i] = v * conductance(h[i], eta, h_floor, model, par, th, tpp, tps)[2] + S[i] - qd
+    for e in range(n - 1):
+        if f[e] == 0.0:
+            out[k] = y[e]
+            k += 1
+            continue
+        if f[e] * f[e + 1] > 0.0 or f[e + 1] == 0.0:
+            continue
+        L = y[e + 1] - y[e]
+        a, b = 0.0, 1.0
+        for _ in range(200):
+            m = 0.5 * (a + b)
+            if m == a or m == b:
+                break
+            fm = (v * conductance(h[e] + m * (h[e + 1] - h[e]), eta, h_floor, model, par, th,
+                                  tpp, tps)[2]
+                  + S[e] + L * (m * hde[e] + 0.5 * m * m * (hde[e + 1] - hde[e])) - qd)
+            if (fm > 0.0) == (f[e] > 0.0):
+                a = m
+            else:
+                b = m
+        out[k] = y[e] + 0.5 * (a + b) * L
+        k += 1
+    if f[n - 1] == 0.0:
+        out[k] = y[n - 1]
+        k += 1
+    return out[:k]
+
+
 class SealPaperFilmTerm(Term):
     """The paper's scheme (Eq. 15-28) on the seal's rod-side chain; a drop-in for
     :class:`sealts.film.seal_film.SealFilmTerm` in the stroke (module docstring).
@@ -269,29 +307,14 @@ class SealPaperFilmTerm(Term):
         return self._flow(t, u, udot, closed=True)[5][9]
 
     def zero_gradient_points(self, t, u, udot=None):
-        """The paper's y0 for this state (mm): every y on the chain where the hydrodynamic
-        gradient g_hd vanishes, c(h(y)) + S(y) = qd with h and dh_eff/dt linear between
-        nodes (S then quadratic; solved per element). Usually two on a converging-diverging
-        gap (the maximum and minimum of the hydrodynamic pressure), none without sliding
-        and squeeze unless all of the chain qualifies (then empty too)."""
+        """The paper's y0 for this state (mm): the points of the chain where the
+        hydrodynamic gradient vanishes, c(h(y)) + S(y) = qd (h and dh_eff/dt linear between
+        nodes), one per element whose ends differ in sign (bisection to round-off). Usually
+        two on a converging-diverging gap, the hydrodynamic pressure's maximum and minimum."""
         y, h, hd, p, v, k = self._flow(t, u, udot, closed=True)
-        cv, hde, S = k[4], k[6], k[8]
         qd = self.constants(t, u, udot)[1]
-        f = v * cv + S - qd
-        out = []
-        for e in np.nonzero(np.sign(f[:-1]) * np.sign(f[1:]) <= 0)[0]:
-            if f[e] == 0.0 and f[e + 1] == 0.0:
-                continue
-            # c linear (h linear, c ~ h away from the floor), S quadratic in the element
-            L = y[e + 1] - y[e]
-            a = 0.5 * (hde[e + 1] - hde[e]) / L
-            b = hde[e] + v * (cv[e + 1] - cv[e]) / L
-            c = f[e]
-            roots = np.roots([a, b, c]) if a != 0.0 else np.array([-c / b])
-            roots = roots[np.isreal(roots)].real
-            roots = roots[(roots >= -1e-12 * L) & (roots <= L * (1 + 1e-12))]
-            out.extend(y[e] + roots[:1])
-        return np.unique(np.array(out, float))
+        return zero_gradient_roots(y, h, k[6], k[8], qd, v, self.eta, self.h_floor,
+                                   *self._ffargs())
 
     def flows(self, t, u, udot=None, closed=True):
         """(Q_in, Q_out) in mm^3/s: into the film at the pressurised end, out at the other
