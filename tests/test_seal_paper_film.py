@@ -180,13 +180,14 @@ def test_rigid_limit_is_the_film_only_paper_scheme(tmp_path, end):
                            atol=1e-9 * np.abs(want).max())
 
 
-def test_flows_conserve_the_film_volume_and_outputs_use_their_own_rate(tmp_path):
+@pytest.mark.parametrize("end", ["min_z", "max_z"])
+def test_flows_conserve_the_film_volume_and_outputs_use_their_own_rate(tmp_path, end):
     """Q_in - Q_out = A sum_i M_i dh_eff_i/dt (the film volume differenced in time along
     u + s U', a moving rod) to round-off, whatever c0 and qd are. The outputs' constants
     (constants()) are the unknowns once the rows hold, and for another U' they are the
     rows' solution at that U': the flows and the shear then match a solve at it."""
     mesh, layout = coarse(tmp_path)
-    term, leak, n = make_term(mesh, layout, "none", "max_z")
+    term, leak, n = make_term(mesh, layout, "none", end)
     c, t = layout.rod_nodes, 0.3
     ur, uz = layout.udofs[c, 0], layout.udofs[c, 1]
     u, ud = state(mesh, layout, 3, t, h_low=4e-4)          # h_eff = h everywhere
@@ -273,6 +274,7 @@ def strokes(tmp_path_factory):
                  on_step=lambda ts, k, t, Ut: states.append((t, Ut)))
         (ta, Ua), (tb, Ub) = states[-2:]
         out[scheme] = step, states, step.scalars(tb, Ub, (Ub - Ua) / (tb - ta))
+    out["setup"] = s, model, u
     return out
 
 
@@ -319,6 +321,17 @@ def test_stroke_schemes_agree(strokes):
     of the 60 mm^3/s inflow), so they carry that rate, Q_in the inlet wedge's most of all."""
     fv, paper = strokes["fv"][2], strokes["paper"][2]
     assert fv["v"] == paper["v"] == 100.0 and paper["friction_solid"] > 10.0
+    # the scene's scheme reached the stroke, and film.alpha with it
+    from dataclasses import replace
+
+    from sealts.problem.stroke_run import StrokeStep
+    step = strokes["paper"][0]
+    assert isinstance(step.film, SealPaperFilmTerm) and step.film.alpha == 0.5
+    assert step.n == strokes["fv"][0].n + 2 and not isinstance(strokes["fv"][0].film,
+                                                                 SealPaperFilmTerm)
+    s, model, u = strokes["setup"]
+    other = StrokeStep(model, u, replace(s, film=replace(s.film, scheme="paper", alpha=0.3)))
+    assert other.film.alpha == 0.3
 
     def rel(key):
         return abs(paper[key] - fv[key]) / abs(fv[key])
