@@ -99,7 +99,7 @@ def test_paper_film_jacobian(tmp_path, factors, end, normal, squeeze):
     last = pd[-1]
     if squeeze:
         assert J0[last, uz[0]] != 0                         # S(y_n) through y_1's element
-    assert np.all(J0[term.qd, ur] != 0) and np.all(J0[term.cd, ur] != 0)
+    assert np.all(J0[term.qdof, ur] != 0) and np.all(J0[term.cdof, ur] != 0)
     assert np.abs(J0[np.ix_(uz, ur)]).max() > 0             # shear through g and h
     out = leak.vd[1] if end == "min_z" else leak.vd[0]      # the flow at y_n
     if squeeze:
@@ -151,10 +151,10 @@ def test_rigid_limit_is_the_film_only_paper_scheme(tmp_path, end):
                              FlowFactors.patir_cheng(RQ, 1.0), H_FLOOR, alpha=0.3)
         # rows at a y0 between two nodes, the same state
         y0 = 0.37 * y[5] + 0.63 * y[6]
-        x = np.concatenate([u[pd], [u[term.cd], y0]])
+        x = np.concatenate([u[pd], [u[term.cdof], y0]])
         want, q1, _ = scheme.residual(t, x, h, hd)
         v = u.copy()
-        v[term.qd] = q1 + u[term.cd]
+        v[term.qdof] = q1 + u[term.cdof]
         f = np.zeros(n)
         term.add_residual(t, v, ud, f)
         want[-1] -= Y0_ANCHOR * (y0 - 0.5 * (y[0] + y[-1]))
@@ -167,7 +167,7 @@ def test_rigid_limit_is_the_film_only_paper_scheme(tmp_path, end):
         x0[-1] = y[np.argmin(h)]
         x = Problem(scheme.size, [film]).solve_steady(x0, t)
         assert np.allclose(held[pd], x[:-2], rtol=0, atol=1e-10)
-        assert held[term.cd] == pytest.approx(x[-2], rel=1e-9)
+        assert held[term.cdof] == pytest.approx(x[-2], rel=1e-9)
         assert np.min(np.abs(term.zero_gradient_points(t, held, ud) - x[-1])) < 1e-9
         _, qa, qb = scheme.residual(t, x, h, hd)
         flows = (AREA * qa, AREA * qb) if end == "min_z" else (-AREA * qb, -AREA * qa)
@@ -206,7 +206,7 @@ def test_flows_conserve_the_film_volume_and_outputs_use_their_own_rate(tmp_path,
     other = ud.copy()
     other[ur] *= -2.0
     again = solve_held(term, leak, n, t, held, other)
-    assert not np.allclose(again[term.qd], held[term.qd], rtol=1e-3)
+    assert not np.allclose(again[term.qdof], held[term.qdof], rtol=1e-3)
     assert term.flows(t, held, other) == pytest.approx(term.flows(t, again, other, False),
                                                        rel=1e-10)
     # the shear's g_i does not involve p: the output at `held` with U' = `other` is the
@@ -237,9 +237,9 @@ def test_squeeze_off_and_dirichlet_end(tmp_path):
         # the c0 row: the hydrostatic integral minus (last - first)
         g = np.zeros(n)
         v = u.copy()
-        v[term.cd] = 0.0
+        v[term.cdof] = 0.0
         term.add_residual(t, v, ud, g)
-        assert g[term.cd] == pytest.approx(-(last - first), abs=1e-14)
+        assert g[term.cdof] == pytest.approx(-(last - first), abs=1e-14)
 
 
 @pytest.fixture(scope="module")

@@ -38,9 +38,9 @@ pressure's maximum and its minimum, and Newton hopped between them from step to 
 at v = 0 with dh/dt = 0 (the hydrostatic start, and nearly so at the first steps of a
 stroke) every y0 solves it, so its row's derivative vanishes while its U' derivative (TS
 shift) does not: Newton sent y0 off the chain and the first step of the paper's cycle
-failed at t = 9e-5 s. qd enters its row linearly with the coefficient -sum W_k / k_k, so
-the row is regular at every state, qd = 0 at the hydrostatic start, and it is continuous
-in time.
+failed at t = 9e-5 s. qd enters its row linearly, with the coefficient
+-sum_i dy_i [alpha / k_i-1 + (1 - alpha) / k_i] < 0, so the row is regular at every state,
+qd = 0 at the hydrostatic start, and it is continuous in time.
 
 Rows (the film's own: the chain's pressures, then c0 and qd), all pressure differences in
 MPa (``set_row_scale`` does nothing):
@@ -65,6 +65,13 @@ Flows (Eq. 40-41): Q_in = A q_1, Q_out = A q_n for a film pressurised at min z (
 signs swap for max z); Q_in - Q_out = A S(y_n) = A sum_k M_k dh_eff_k/dt exactly, as in the
 default scheme. :class:`PaperLeakageTerm` integrates them, dV/dt = Q (Eq. 42).
 
+Outputs (:meth:`SealPaperFilmTerm.flows`, ``shear_forces``, ``pressure_gradient``,
+``nodal_flows``) use the c0 and qd that solve their rows at the (u, U') they are given,
+:meth:`SealPaperFilmTerm.constants` (closed form: the rows do not involve p and are linear
+in their constant); at the TS's U' these are the unknowns. The stroke's outputs estimate U'
+by the step's difference quotient, and g_i = (c_i + S_i - qd + c0)/k_i amplifies a mismatch
+between that U' (in S) and the solve's (in qd) by 1/k_i, 1e3 MPa s/mm^3 at h = 0.5 um.
+
 Exact Jacobian. q_i depends on c0, qd and, through S(y_i), on every squeeze rate and node
 position from y_1 to y_i; so the pressure rows, the c0 and qd rows and the shear rows are
 dense over the chain's u_r and u_z (the pattern holds these blocks in full). With hde_k =
@@ -77,8 +84,9 @@ h_eff'(h_k) dh_k/dt and M_k^(i) the trapezoid weight of node k in S(y_i):
 * dg_i = (d(1/k_i)/dh_i (c_i - q_i) + c'_i / k_i) dh_i - dq_i / k_i;
 * Eq. 27's dy_i on u_z,i and u_z,i-1.
 
-The kernels (:func:`chain_flow`, :func:`squeeze_integral_derivatives`) are numba with
-``cache=True``; the assembly is vectorised numpy over the chain.
+The kernels (:func:`chain_flow`, :func:`squeeze_integral_derivatives`,
+:func:`zero_gradient_roots`) are numba with ``cache=True``; the assembly is vectorised numpy
+over the chain.
 """
 import numba
 import numpy as np
@@ -225,7 +233,7 @@ class SealPaperFilmTerm(Term):
         self.xd = np.asarray(xdofs, np.int64)
         if self.xd.shape != (2,):
             raise ValueError("xdofs must be the two dofs (c0, qd)")
-        self.cd, self.qd = int(self.xd[0]), int(self.xd[1])
+        self.cdof, self.qdof = int(self.xd[0]), int(self.xd[1])
         self.R, self.Z = self.X[self.chain, 0], self.X[self.chain, 1]
         self.r_rod, self.v = r_rod, of_time(v)
         self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
@@ -269,7 +277,7 @@ class SealPaperFilmTerm(Term):
         at the constants that solve their rows at this (u, udot), :meth:`constants`."""
         y, h, hd, p = self.film(t, u, udot)
         v = self.v(t)
-        c0, qd = self.constants(t, u, udot) if closed else (u[self.cd], u[self.qd])
+        c0, qd = self.constants(t, u, udot) if closed else (u[self.cdof], u[self.qdof])
         k = chain_flow(y, h, hd, float(c0), float(qd), v, self.eta, self.h_floor,
                        *self._ffargs())
         return y, h, hd, p, v, k
@@ -292,10 +300,6 @@ class SealPaperFilmTerm(Term):
 
     def set_row_scale(self, t, u, udot=None):
         """The rows are pressure differences in MPa already."""
-
-    def initial_constants(self, t, u):
-        """(c0, qd) for a start: no flow (the c0 row is linear in c0, the qd row in qd)."""
-        return 0.0, 0.0
 
     # outputs: at the constants that solve their rows at (u, udot), see constants()
     def pressure_gradient(self, t, u, udot=None):
@@ -353,10 +357,10 @@ class SealPaperFilmTerm(Term):
         r = np.empty(self.m)
         r[0] = p[0] - p_first
         r[1:] = p[1:] - p[:-1] - self._weighted(Le, g)
-        ghs = w * u[self.cd]
+        ghs = w * u[self.cdof]
         np.add.at(f, self.pd, r)
-        f[self.cd] += self._weighted(Le, ghs).sum() - (p_last - p_first)
-        f[self.qd] += self._weighted(Le, g - ghs).sum()
+        f[self.cdof] += self._weighted(Le, ghs).sum() - (p_last - p_first)
+        f[self.qdof] += self._weighted(Le, g - ghs).sum()
         np.subtract.at(f, self.ur, self.forces(t, u))
         if self.surface_normal:
             np.subtract.at(f, self.uz, self.axial_forces(t, u))
@@ -386,7 +390,7 @@ class SealPaperFilmTerm(Term):
         (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
         he, dhe, w, dw, g = k[0], k[1], k[2], k[3], k[10]
         m, A, al = self.m, self.area, self.alpha
-        c0 = u[self.cd]
+        c0 = u[self.cdof]
         Le = np.diff(y)
         i = np.arange(m)
         uzc = m + 2 + i                                       # u_z,i's dense column

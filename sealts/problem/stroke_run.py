@@ -167,7 +167,7 @@ class StrokeStep:
             U[lay.film_dofs] = np.linspace(self.scene.fluid.p_in, self.scene.fluid.p_out,
                                            lay.film_dofs.size)
             if self.xdofs is not None:
-                U[self.xdofs] = self.film.initial_constants(0.0, U)
+                U[self.xdofs] = self.film.constants(0.0, U)
             held = np.concatenate([lay.udofs.ravel(), self.vdofs]
                                   + ([lay.prony_dofs.ravel()] if self.prony is not None
                                      else []))
