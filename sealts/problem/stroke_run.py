@@ -283,7 +283,9 @@ def run_stroke(model, u, scene, writer, comm, say):
         ves = step.viscoelastic
         say(ves.classes.describe(ves.series, ves.shift), force=True)
     say(f"stroke: {st.velocity} v(t), v_max = {st.v_max:g} mm/s, to t = {st.t_end:g} s; "
-        f"{step.n} unknowns ({lay.film_dofs.size} film pressures)", force=True)
+        f"{step.n} unknowns ({lay.film_dofs.size} film pressures, "
+        f"{scene.film.scheme + ' film' if step.film is not None else 'dry'})",
+        force=True)
     U = step.start()
     s0 = step.scalars(0.0, U)
     say(f"stroke start: film load {s0['load_fluid']:.5g} N, asperity load "
@@ -352,8 +354,9 @@ def run_stroke(model, u, scene, writer, comm, say):
     c = step.problem.counters
     info = {
         "velocity": st.velocity, "v_max": st.v_max, "t_end": st.t_end,
-        "unknowns": int(step.n),
         "film": step.film is not None,
+        "film_scheme": scene.film.scheme if step.film is not None else "none",
+        "unknowns": int(step.n),
         "leakage_in": rows[-1]["V_in"], "leakage_out": rows[-1]["V_out"],
         "outstroke_transport": state["transport"][1],
         "instroke_transport": state["transport"][-1],
