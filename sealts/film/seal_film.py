@@ -89,6 +89,25 @@ def nodal_conductance(h, eta, h_floor, model, par, th, tpp, tps):
 
 
 
+def set_chain(term, X, chain, pdofs, udofs, pressurised_end):
+    """The film chain's arrays on ``term`` (both coupled film schemes): X, chain, m, the
+    nodes' u_r, u_z and film-pressure dofs, their reference R, Z. Returns m."""
+    if pressurised_end not in ("min_z", "max_z"):
+        raise ValueError(f"pressurised_end must be 'min_z' or 'max_z', got {pressurised_end!r}")
+    term.X = np.asarray(X, float)
+    term.chain = np.asarray(chain, np.int64)
+    m = term.m = term.chain.size
+    if m < 3:
+        raise ValueError("the film needs at least three chain nodes")
+    udofs = vertex_dofs(term.X.shape[0]) if udofs is None else np.asarray(udofs)
+    term.ur, term.uz = udofs[term.chain, 0], udofs[term.chain, 1]
+    term.pd = np.asarray(pdofs, np.int64)
+    if term.pd.shape != (m,):
+        raise ValueError("pdofs must give one film-pressure dof per chain node")
+    term.R, term.Z = term.X[term.chain, 0], term.X[term.chain, 1]
+    return m
+
+
 class SealFilmTerm(Term):
     """The film on the seal's rod-side chain, coupled to the seal displacements.
 
@@ -114,20 +133,7 @@ class SealFilmTerm(Term):
         weight ``beta`` of Eq. 33 (module docstring). The film rows are scaled by their
         diagonal for the reference chain at a uniform gap ``h_ref`` (mm) until
         :meth:`set_row_scale` fixes them at a state."""
-        if pressurised_end not in ("min_z", "max_z"):
-            raise ValueError("pressurised_end must be 'min_z' or 'max_z', "
-                             f"got {pressurised_end!r}")
-        self.X = np.asarray(X, float)
-        self.chain = np.asarray(chain, np.int64)
-        m = self.m = self.chain.size
-        if m < 3:
-            raise ValueError("the film needs at least three chain nodes")
-        udofs = vertex_dofs(self.X.shape[0]) if udofs is None else np.asarray(udofs)
-        self.ur, self.uz = udofs[self.chain, 0], udofs[self.chain, 1]
-        self.pd = np.asarray(pdofs, np.int64)
-        if self.pd.shape != (m,):
-            raise ValueError("pdofs must give one film-pressure dof per chain node")
-        self.R, self.Z = self.X[self.chain, 0], self.X[self.chain, 1]
+        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end)
         self.r_rod, self.v = r_rod, of_time(v)
         self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
         self.eta, self.area, self.h_floor, self.squeeze = eta, area, h_floor, squeeze

@@ -99,12 +99,11 @@ over the chain.
 import numba
 import numpy as np
 
-from ..mesh.layout import vertex_dofs
 from ..problem import Term, of_time
 from .flow_factors import FlowFactors
 from .gap import h_eff
 from .reynolds_fv import conductance
-from .seal_film import SealFilmTerm
+from .seal_film import SealFilmTerm, set_chain
 
 
 @numba.njit(cache=True)
@@ -225,24 +224,11 @@ class SealPaperFilmTerm(Term):
         """Arguments as :class:`SealFilmTerm`'s (no ``h_ref``: the rows are in MPa), plus
         ``xdofs``: the dofs of the integration constants c0 and qd (both mm^2/s), and
         ``alpha``: the gradient weight of Eq. 27."""
-        if pressurised_end not in ("min_z", "max_z"):
-            raise ValueError("pressurised_end must be 'min_z' or 'max_z', "
-                             f"got {pressurised_end!r}")
-        self.X = np.asarray(X, float)
-        self.chain = np.asarray(chain, np.int64)
-        m = self.m = self.chain.size
-        if m < 3:
-            raise ValueError("the film needs at least three chain nodes")
-        udofs = vertex_dofs(self.X.shape[0]) if udofs is None else np.asarray(udofs)
-        self.ur, self.uz = udofs[self.chain, 0], udofs[self.chain, 1]
-        self.pd = np.asarray(pdofs, np.int64)
-        if self.pd.shape != (m,):
-            raise ValueError("pdofs must give one film-pressure dof per chain node")
+        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end)
         self.xd = np.asarray(xdofs, np.int64)
         if self.xd.shape != (2,):
             raise ValueError("xdofs must be the two dofs (c0, qd)")
         self.cdof, self.qdof = int(self.xd[0]), int(self.xd[1])
-        self.R, self.Z = self.X[self.chain, 0], self.X[self.chain, 1]
         self.r_rod, self.v = r_rod, of_time(v)
         self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
         self.eta, self.area, self.h_floor, self.squeeze = eta, area, h_floor, squeeze
