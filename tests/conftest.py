@@ -75,6 +75,24 @@ def _section(lines, name):
             yield line
 
 
+def central_differences(problem, t, u, ud, blocks, eps, n):
+    """dF/dU and dF/dU' of ``problem``'s residual (n x n) by central differences in the
+    columns of ``blocks`` (name -> dofs), with the step ``eps[name]`` in U and 1e-2 in U'
+    (the residuals are affine in U')."""
+    import numpy as np
+    fd_u, fd_ud = np.zeros((n, n)), np.zeros((n, n))
+    for name, cols in blocks.items():
+        for j in cols:
+            e = np.zeros(n)
+            e[j] = eps[name]
+            fd_u[:, j] = (problem.residual(t, u + e, ud) - problem.residual(t, u - e, ud)) \
+                / (2 * eps[name])
+            e[j] = 1e-2
+            fd_ud[:, j] = (problem.residual(t, u, ud + e) - problem.residual(t, u, ud - e)) \
+                / 2e-2
+    return fd_u, fd_ud
+
+
 def mount_and_pressurise(s):
     """Steps 1-2 of a seal scene: mounted, then pressurised to fluid.p_in. (model, u)."""
     from sealts.problem.seal_run import model_from_scene

@@ -9,6 +9,7 @@ p, and the axial force balance of the solved seal.
 import numpy as np
 import pytest
 
+from conftest import central_differences
 from sealts.film.flow_factors import FlowFactors
 from sealts.film.quantities import shear_stress
 from sealts.film.reynolds_fv import ControlVolumeScheme, control_volumes, element_fluxes
@@ -98,17 +99,7 @@ def test_seal_film_jacobian(tmp_path, factors, end, normal, gap):
     # U', so its step may be large
     eps = {"p": 1e-6, "ur": 1e-8, "uz": 1e-7}
     n = layout.n
-    fd_u = np.zeros((n, n))
-    fd_ud = np.zeros((n, n))
-    for name, cols in blocks.items():
-        for j in cols:
-            e = np.zeros(n)
-            e[j] = eps[name]
-            fd_u[:, j] = (problem.residual(t, u + e, ud) - problem.residual(t, u - e, ud)) \
-                / (2 * eps[name])
-            e[j] = 1e-2
-            fd_ud[:, j] = (problem.residual(t, u, ud + e) - problem.residual(t, u, ud - e)) \
-                / 2e-2
+    fd_u, fd_ud = central_differences(problem, t, u, ud, blocks, eps, n)
     # nothing outside the chain's dofs is touched
     others = np.setdiff1d(np.arange(n), np.concatenate(list(blocks.values())))
     assert not np.any(J0[others]) and not np.any(J0[:, others])

@@ -7,6 +7,7 @@ The film on the chain, the random seal states and the moving rod are test_seal_f
 import numpy as np
 import pytest
 
+from conftest import central_differences
 from sealts.film.flow_factors import FlowFactors
 from sealts.film.paper_scheme import Y0_ANCHOR, PaperScheme
 from sealts.film.quantities import shear_stress
@@ -71,16 +72,7 @@ def test_paper_film_jacobian(tmp_path, factors, end, normal, squeeze):
     # u_r steps above the round-off of h = R + u_r - r; F is affine in p, c0, qd, V and U'
     # (any step: large ones, as the rows hold g ~ 1e6 MPa/mm at the node in the floor range)
     eps = {"p": 1e-2, "ur": 1e-8, "uz": 1e-7, "x": 1e-2, "V": 1e-2}
-    fd_u, fd_ud = np.zeros((n, n)), np.zeros((n, n))
-    for name, cols in blocks.items():
-        for j in cols:
-            e = np.zeros(n)
-            e[j] = eps[name]
-            fd_u[:, j] = (problem.residual(t, u + e, ud) - problem.residual(t, u - e, ud)) \
-                / (2 * eps[name])
-            e[j] = 1e-2
-            fd_ud[:, j] = (problem.residual(t, u, ud + e) - problem.residual(t, u, ud - e)) \
-                / 2e-2
+    fd_u, fd_ud = central_differences(problem, t, u, ud, blocks, eps, n)
     dofs = np.concatenate(list(blocks.values()))
     others = np.setdiff1d(np.arange(n), dofs)
     assert not np.any(J0[others]) and not np.any(J0[:, others])

@@ -89,9 +89,11 @@ def nodal_conductance(h, eta, h_floor, model, par, th, tpp, tps):
 
 
 
-def set_chain(term, X, chain, pdofs, udofs, pressurised_end):
-    """The film chain's arrays on ``term`` (both coupled film schemes): X, chain, m, the
-    nodes' u_r, u_z and film-pressure dofs, their reference R, Z. Returns m."""
+def set_chain(term, X, chain, pdofs, udofs, pressurised_end, r_rod, v, rod_rate, eta, area,
+              h_floor, squeeze, ff, p_in, p_out):
+    """The film's chain and parameters on ``term`` (both coupled film schemes; arguments as
+    :class:`SealFilmTerm`'s): X, chain, m, the nodes' u_r, u_z and film-pressure dofs, their
+    reference R, Z, and the rod, fluid and end pressures. Returns m."""
     if pressurised_end not in ("min_z", "max_z"):
         raise ValueError(f"pressurised_end must be 'min_z' or 'max_z', got {pressurised_end!r}")
     term.X = np.asarray(X, float)
@@ -105,6 +107,14 @@ def set_chain(term, X, chain, pdofs, udofs, pressurised_end):
     if term.pd.shape != (m,):
         raise ValueError("pdofs must give one film-pressure dof per chain node")
     term.R, term.Z = term.X[term.chain, 0], term.X[term.chain, 1]
+    term.r_rod, term.v = r_rod, of_time(v)
+    term.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
+    term.eta, term.area, term.h_floor, term.squeeze = eta, area, h_floor, squeeze
+    term.ff = FlowFactors.none() if ff is None else ff
+    first = pressurised_end == "min_z"
+    term.p_first = of_time(p_in if first else p_out)
+    term.p_last = of_time(p_out if first else p_in)
+    term.pressurised_end = pressurised_end
     return m
 
 
@@ -133,15 +143,8 @@ class SealFilmTerm(Term):
         weight ``beta`` of Eq. 33 (module docstring). The film rows are scaled by their
         diagonal for the reference chain at a uniform gap ``h_ref`` (mm) until
         :meth:`set_row_scale` fixes them at a state."""
-        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end)
-        self.r_rod, self.v = r_rod, of_time(v)
-        self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
-        self.eta, self.area, self.h_floor, self.squeeze = eta, area, h_floor, squeeze
-        self.ff = FlowFactors.none() if ff is None else ff
-        first = pressurised_end == "min_z"
-        self.p_first = of_time(p_in if first else p_out)
-        self.p_last = of_time(p_out if first else p_in)
-        self.pressurised_end = pressurised_end
+        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end, r_rod, v, rod_rate, eta,
+                      area, h_floor, squeeze, ff, p_in, p_out)
 
         ur, uz, pd = self.ur, self.uz, self.pd
         a = np.arange(m - 1)

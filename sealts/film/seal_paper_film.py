@@ -99,8 +99,7 @@ over the chain.
 import numba
 import numpy as np
 
-from ..problem import Term, of_time
-from .flow_factors import FlowFactors
+from ..problem import Term
 from .gap import h_eff
 from .reynolds_fv import conductance
 from .seal_film import SealFilmTerm, set_chain
@@ -224,19 +223,12 @@ class SealPaperFilmTerm(Term):
         """Arguments as :class:`SealFilmTerm`'s (no ``h_ref``: the rows are in MPa), plus
         ``xdofs``: the dofs of the integration constants c0 and qd (both mm^2/s), and
         ``alpha``: the gradient weight of Eq. 27."""
-        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end)
+        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end, r_rod, v, rod_rate, eta,
+                      area, h_floor, squeeze, ff, p_in, p_out)
         self.xd = np.asarray(xdofs, np.int64)
         if self.xd.shape != (2,):
             raise ValueError("xdofs must be the two dofs (c0, qd)")
         self.cdof, self.qdof = int(self.xd[0]), int(self.xd[1])
-        self.r_rod, self.v = r_rod, of_time(v)
-        self.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
-        self.eta, self.area, self.h_floor, self.squeeze = eta, area, h_floor, squeeze
-        self.ff = FlowFactors.none() if ff is None else ff
-        first = pressurised_end == "min_z"
-        self.p_first = of_time(p_in if first else p_out)
-        self.p_last = of_time(p_out if first else p_in)
-        self.pressurised_end = pressurised_end
         self.alpha, self.beta = alpha, beta
         self.surface_normal, self.shear = surface_normal, shear
         self.lo = np.concatenate([[0], np.arange(m - 1)])
