@@ -31,3 +31,12 @@ def smooth_floor(x, floor):
 def h_eff(h, h_floor):
     """Return (h_eff, d h_eff / dh)."""
     return smooth_floor(h, h_floor)
+
+
+@numba.njit(cache=True, inline="always")
+def h_eff_rate(h, hd, h_floor):
+    """(d h_eff/dt, its derivative in h) for the rate dh/dt = hd: h_eff'(h) hd and
+    h_eff''(h) hd (h_eff'' = h_eff' / h_floor in the floor range, 0 above it)."""
+    _, dhe = smooth_floor(h, h_floor)
+    d2 = dhe / h_floor if (h_floor > 0.0 and h < 2.0 * h_floor) else 0.0
+    return dhe * hd, d2 * hd

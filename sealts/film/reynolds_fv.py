@@ -35,7 +35,7 @@ import numba
 import numpy as np
 
 from .flow_factors import flow_factors
-from .gap import h_eff, smooth_floor
+from .gap import h_eff, h_eff_rate, smooth_floor
 
 PHI_P_MIN = 1e-3
 
@@ -126,13 +126,10 @@ def storage(y, h, hd, h_floor):
             m += 0.5 * (y[i] - y[i - 1])
         if i < n - 1:
             m += 0.5 * (y[i + 1] - y[i])
-        he, dhe = h_eff(h[i], h_floor)
-        d2 = 0.0
-        if h_floor > 0.0 and h[i] < 2.0 * h_floor:
-            d2 = dhe / h_floor
-        s[i] = m * dhe * hd[i]
-        ds_dh[i] = m * d2 * hd[i]
-        ds_dhd[i] = m * dhe
+        rate, drate = h_eff_rate(h[i], hd[i], h_floor)
+        s[i] = m * rate
+        ds_dh[i] = m * drate
+        ds_dhd[i] = m * h_eff(h[i], h_floor)[1]
     return s, ds_dh, ds_dhd
 
 

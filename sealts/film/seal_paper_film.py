@@ -100,9 +100,9 @@ import numba
 import numpy as np
 
 from ..problem import Term
-from .gap import h_eff
+from .gap import h_eff_rate
 from .reynolds_fv import conductance
-from .seal_film import SealFilmTerm, set_chain
+from .seal_film import SealFilmTerm, nodal_conductance, set_chain
 
 
 @numba.njit(cache=True)
@@ -113,22 +113,11 @@ def chain_flow(y, h, hd, c0, qd, v, eta, h_floor, model, par, th, tpp, tps):
     dw = d(1/k)/dh, cv = c/v and dcv = d(c/v)/dh, hde = dh_eff/dt and dhde = d(hde)/dh, the
     squeeze integral S_i = int_{y_1}^{y_i} hde dy (trapezoids), q_i = -c0 + qd - S_i."""
     n = y.size
-    he = np.empty(n)
-    dhe = np.empty(n)
-    w = np.empty(n)
-    dw = np.empty(n)
-    cv = np.empty(n)
-    dcv = np.empty(n)
+    he, dhe, w, dw, cv, dcv = nodal_conductance(h, eta, h_floor, model, par, th, tpp, tps)
     hde = np.empty(n)
     dhde = np.empty(n)
     for i in range(n):
-        he[i], dhe[i] = h_eff(h[i], h_floor)
-        w[i], dw[i], cv[i], dcv[i] = conductance(h[i], eta, h_floor, model, par, th, tpp, tps)
-        d2 = 0.0
-        if h_floor > 0.0 and h[i] < 2.0 * h_floor:
-            d2 = dhe[i] / h_floor                     # h_eff'' in the floor range
-        hde[i] = dhe[i] * hd[i]
-        dhde[i] = d2 * hd[i]
+        hde[i], dhde[i] = h_eff_rate(h[i], hd[i], h_floor)
     S = np.empty(n)
     q = np.empty(n)
     g = np.empty(n)
