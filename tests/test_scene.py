@@ -151,6 +151,7 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[fluid]\np_in = 0.5\np_out = 0.5\n", "fluid.p_out = 0.5 MPa: a seal scene's atmosphere"),
     ("[groove]\nmu = -0.1\n", "groove.mu must be >= 0"),
     ("[stroke]\nvelocity = 'sine'\ngamma_crit = 0.0\n", "stroke.gamma_crit must be > 0 mm"),
+    ("[stroke]\nvelocity = 'sine'\nfilm = 'no'\n", "stroke.film must be true or false"),
     ("[stroke]\nvelocity = 'sine'\n[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\n"
      "[fluid]\np_in = 1.0\n", "a scene runs either the stroke or the pressure hold"),
 ])
