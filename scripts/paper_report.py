@@ -2,7 +2,8 @@
 and put beside the paper's stated values in a markdown report.
 
 Runs the ``configs/paper_*.toml`` scenes one after another (one simulation at a time), each
-through ``python -m sealts`` in its own process, then reads their output and writes
+through ``python -m sealts`` in its own process, then reads their output
+(:mod:`sealts.io.results`, the numbers from :mod:`sealts.io.metrics`) and writes
 ``OUT/report.md`` with PNG figures beside it:
 
 * steps 1-2 once per sealed pressure: ``paper_state_1mpa`` (mounted, pressurised to 1 MPa)
@@ -25,7 +26,6 @@ whose scene copy is unchanged and finished; ``--report-only`` only rewrites the 
 the runs already in OUT.
 """
 import argparse
-import csv
 import datetime
 import json
 import os
@@ -41,12 +41,44 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from sealts.io.metrics import (asperity_share, at_end, band_core, contact_band,  # noqa: E402
+                               cumulative_volume, film_change, film_metrics, flow_film,
+                               ihl_film, ihl_flow, in_band, inlet_nodes, inlet_span, ripple,
+                               steady_change)
+from sealts.io.results import MissingOutput, Results  # noqa: E402
+
 MESHES = {"default": (0.025, 0.2), "coarse": (0.1, 0.4)}
-R_ROD = 25.0                    # mm, the paper's rod radius (Table 3)
-AREA = 2 * np.pi * R_ROD        # mm, A of Eq. 31
-ETA = 1e-8                      # MPa s
-H_MIX = 7e-4                    # mm
-RQ = 2.15e-4                    # mm
+TRIM = 0.1      # film statistics over the contact band without this share of it at each end
+
+# What the paper states in its text (Section 3) and figures, the column "paper" of the report.
+PAPER = {
+    "fig8_film": 1e-3,              # mm, "about 1 um" in the contact
+    "fig8_p_max": (3.0, 3.5),       # MPa, peak fluid pressure
+    "fig8_p_axis": 3.6,             # MPa, the top of its Fig. 8a pressure axis
+    "fig9_excess": 0.15e-3,         # mm, viscoelastic film over long-term at 0 h, at most
+    "fig9_hours": (1.0, 5.0, 15.0),  # h, its curves besides 0 h
+    "fig14_net": 100.0,             # mm^3, net leakage of ve,sq,Phi over the cycle
+    "fig14_q": (-30.0, 50.0),       # mm^3/s, range of Q over the cycle
+}
+
+# The README's mesh study of the hyperelastic cycle (configs/oring_stroke.toml, recorded in
+# tests/test_cycle_regression.py): contact / bulk mesh (mm), net leakage and outstroke
+# volume (mm^3); the last row is the paper's mesh. And the pressurised O-ring's dry contact
+# peak on the paper's mesh (README, "The seal body and mounting").
+CYCLE_STUDY = [((0.1, 0.4), 11.05, 75.85), ((0.05, 0.2), 12.40, 78.92),
+               ((0.025, 0.2), 15.88, 83.98), ((0.0125, 0.2), 15.49, 83.59),
+               ((0.01, 0.05), 15.87, 84.6)]
+DRY_PEAK_PAPER_MESH = 2.71          # MPa
+
+
+def study(col, nd=2):
+    """'a / b / c / d mm^3 on the 0.1 / ... mm contact meshes, e on the paper's 0.01 / 0.05
+    mm mesh' of the cycle study's column ``col`` (1: net leakage, 2: outstroke volume)."""
+    rows, paper = CYCLE_STUDY[:-1], CYCLE_STUDY[-1]
+    return (" / ".join(f"{r[col]:.{nd}f}" for r in rows) + " mm^3 on the "
+            + " / ".join(f"{r[0][0]:g}" for r in rows) + " mm contact meshes (bulk "
+            + " / ".join(f"{r[0][1]:g}" for r in rows) + " mm), "
+            f"{paper[col]:.{nd}f} on the paper's {paper[0][0]:g} / {paper[0][1]:g} mm mesh")
 
 
 @dataclass
@@ -179,144 +211,44 @@ def run_one(run, mesh, out, reuse, k, n):
 # ---------------------------------------------------------------------------------------
 # reading the runs' output
 
-class Missing(Exception):
-    pass
+def output(out, key):
+    """The output of run ``key`` (:class:`sealts.io.results.Results`)."""
+    return Results(out / "runs" / key)
 
 
-def read_csv(path):
-    if not path.exists():
-        raise Missing(str(path))
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return rows
+def profiles(out, key, name="stroke_profiles"):
+    """{t: profile sorted by y} of one of run ``key``'s profile files."""
+    return output(out, key).profiles(name, sort_by="y")
 
 
-def series(out, key):
-    rows = read_csv(out / "runs" / key / "series.csv")
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+def scene_of(out, key):
+    """The scene run ``key`` ran: its copy in ``runs/<key>/``, or its ``configs/`` file
+    before it has run (they differ in the mesh, the restart state and ``Run.edits`` only)."""
+    from sealts.scene import SceneError, load_scene
+    copy = out / "runs" / key / "scene.toml"
+    if copy.is_file():
+        try:
+            return load_scene(copy)
+        except SceneError:              # e.g. its [start] state has gone since
+            pass
+    return load_scene(ROOT / "configs" / f"{next(r for r in RUNS if r.key == key).scene}.toml")
 
 
-def profiles(out, key, name="stroke_profiles.csv"):
-    """{t: {column: array sorted by y}} of a long-format profile file."""
-    rows = read_csv(out / "runs" / key / name)
-    by_t = {}
-    for r in rows:
-        by_t.setdefault(float(r["t"]), []).append(r)
-    res = {}
-    for t, rs in sorted(by_t.items()):
-        d = {k: np.array([float(r[k]) for r in rs]) for k in rs[0] if k != "t"}
-        o = np.argsort(d["y"])
-        res[t] = {k: v[o] for k, v in d.items()}
-    return res
+def rod_area(scene):
+    """A of Eq. 31 (mm): the rod's circumference, or the depth (1 mm) of a planar seal."""
+    return 2 * np.pi * scene.rod.radius if scene.seal.symmetry == "axisymmetric" else 1.0
 
 
-def summary(out, key):
-    p = out / "runs" / key / "summary.json"
-    if not p.exists():
-        raise Missing(str(p))
-    return json.loads(p.read_text())
-
-
-def band(prof0):
-    """(y_lo, y_hi): the dry contact band, where the asperity law carries load at rest."""
-    touch = prof0["p_asperity"] > 1e-6
-    y = prof0["y"][touch]
-    return float(y.min()), float(y.max())
-
-
-def inside(prof, b):
-    return (prof["y"] >= b[0]) & (prof["y"] <= b[1])
-
-
-def core(b, trim=0.1):
-    """The band without ``trim`` of its width at each end (the inlet and outlet menisci,
-    where a small axial shift of the steep flank reads as a large change of h)."""
-    w = b[1] - b[0]
-    return (b[0] + trim * w, b[1] - trim * w)
-
-
-def film_metrics(prof, b):
-    """Film numbers of one profile over the dry contact band b."""
-    m = inside(prof, b)
-    y, h, p, pa = prof["y"], prof["h"], prof["p"], prof["p_asperity"]
-    k = int(np.argmax(p))
-    j = int(np.argmin(p))
-    return {"h_min": float(h[m].min()), "h_mean": float(h[m].mean()),
-            "h_at_pmax": float(h[k]), "p_max": float(p[k]), "y_pmax": float(y[k]),
-            "p_min": float(p[j]), "y_pmin": float(y[j]), "pa_max": float(pa.max()),
-            "tau_max": float(np.abs(prof["tau"]).max()),
-            "taus_max": float(np.abs(prof["tau_solid"]).max()),
-            "total_max": float((p + pa)[m].max())}
-
-
-def ripple(prof, b):
-    """Amplitude of the node-to-node ripple of h over the band: half the largest deviation
-    of a node from the mean of its two neighbours (mm)."""
-    h = prof["h"][inside(prof, b)]
-    if h.size < 3:
-        return 0.0
-    return float(0.5 * np.abs(h[1:-1] - 0.5 * (h[:-2] + h[2:])).max())
-
-
-def steady_change(profs, b):
-    """Largest change of h over the band between the last two output times, relative to
-    the band's mean film, and the two times."""
-    ts = sorted(profs)
-    a, c = profs[ts[-2]], profs[ts[-1]]
-    m = inside(c, b)
-    ha = np.interp(c["y"][m], a["y"], a["h"])
-    return float(np.abs(c["h"][m] - ha).max() / c["h"][m].mean()), ts[-2], ts[-1]
-
-
-def at_end(ser):
-    return {k: float(v[-1]) for k, v in ser.items()}
-
-
-def flow_film(q, v):
-    """The film thickness that carries the flow q (mm^3/s) at rod speed v: q = A v h / 2."""
-    return 2.0 * q / (AREA * v)
+def table2():
+    """The paper's Table 2 Prony series (:mod:`sealts.solid.prony`), 25 C."""
+    from sealts.solid.prony import TABLE2_G, TABLE2_TAU, PronySeries
+    return PronySeries(TABLE2_G, TABLE2_TAU)
 
 
 def relaxation_modulus(t):
-    """G(t) / G_inf of Table 2 (Eq. 7-9) at 25 C."""
-    from sealts.solid.prony import TABLE2_G, TABLE2_TAU
-    g_inf = 1.0 - TABLE2_G.sum()
-    return float((1.0 - np.sum(TABLE2_G * (1.0 - np.exp(-t / TABLE2_TAU)))) / g_inf)
-
-
-def ihl_film(y, p, dpdy, v, h_star, y_w):
-    """The IHL film along the dry contact: h from 6 eta v (h - h*) / h^3 = dp/dy, on the
-    inlet flank the thick root up to the steepest rise y_w, then the thin one (Blok's
-    construction); NaN outside the contact."""
-    s = np.sign(v)
-    g = s * dpdy / (6.0 * ETA * abs(v))
-    along, along_w = s * y, s * y_w
-    h = np.full(y.size, np.nan)
-    for i in np.nonzero(p > 0.0)[0]:
-        if abs(g[i]) < 1e-30:
-            h[i] = h_star
-            continue
-        r = np.roots([g[i], 0.0, -1.0, h_star])
-        r = np.sort(r[(np.abs(r.imag) < 1e-12 * h_star) & (r.real > 0.0)].real)
-        if r.size == 0:               # beyond the steepest rise (discretely): h = 3 h*/2
-            h[i] = 1.5 * h_star
-        elif g[i] < 0.0 or r.size == 1:
-            h[i] = r[0]
-        else:
-            h[i] = r[-1] if along[i] < along_w else r[0]
-    return h
-
-
-def inlet_span(ip, y_w, v):
-    """Elements of the rod side between the last node out of contact on the inlet side and
-    the steepest rise y_w of an IHL profile ``ip`` (the film forms there)."""
-    y, pc = ip["y"], ip["p_contact"]
-    if v < 0:
-        y, y_w = -y[::-1], -y_w
-        pc = pc[::-1]
-    first = int(np.argmax(pc > 0.0))           # first node in contact along the motion
-    k = int(np.argmin(np.abs(y - y_w)))
-    return float(k - first + 1)
+    """G(t) / G_inf of Table 2 (Eq. 7-9) at its reference temperature."""
+    series = table2()
+    return float(series.relaxation(t)) / series.g_inf
 
 
 # ---------------------------------------------------------------------------------------
@@ -366,6 +298,16 @@ class Report:
         self.parts, self.numbers = [], {}
         self.plots = plots
         self.plt = plt_setup()
+        self.scenes = {}
+
+    def scene(self, key):
+        """The scene of run ``key`` (:func:`scene_of`), loaded once."""
+        if key not in self.scenes:
+            self.scenes[key] = scene_of(self.out, key)
+        return self.scenes[key]
+
+    def area(self, key):
+        return rod_area(self.scene(key))
 
     def add(self, text):
         self.parts.append(text.strip("\n") + "\n")
@@ -380,15 +322,15 @@ class Report:
     def prepare(self):
         """What every section reads: the dry contact peak and the inlet's resolution."""
         try:
-            s1 = summary(self.out, "state_1mpa")
+            s1 = output(self.out, "state_1mpa").summary
             self.dry_peak = s1["results"]["p_contact_max"]
-        except Missing:
+        except MissingOutput:
             s1, self.dry_peak = None, float("nan")
         try:
-            ih = summary(self.out, "ihl14")["ihl"]["outstroke"]
-            ip = profiles(self.out, "ihl14", "ihl_profile.csv")[0.0]
+            ih = output(self.out, "ihl14").summary["ihl"]["outstroke"]
+            ip = profiles(self.out, "ihl14", "ihl_profile")[0.0]
             self.inlet_elements = inlet_span(ip, ih["y_w"], 1.0)
-        except Missing:
+        except MissingOutput:
             self.inlet_elements = float("nan")
         return s1
 
@@ -494,10 +436,8 @@ class Report:
 ## Mesh check
 
 The same numbers from the runs on other meshes (contact / bulk element size) in {where};
-"-" where a run is not there. The README's study of the hyperelastic cycle (bulk 0.2 mm
-unless said): net leakage 11.05 / 12.40 / 15.88 / 15.49 mm^3 and outstroke volume
-75.9 / 78.9 / 84.0 / 83.6 mm^3 on the 0.1 (bulk 0.4) / 0.05 / 0.025 / 0.0125 mm contact
-meshes, 15.87 and 84.6 mm^3 on the paper's 0.01 / 0.05 mm mesh.
+"-" where a run is not there. The README's study of the hyperelastic cycle: net leakage
+{study(1)}; outstroke volume {study(2)}.
 
 {table(head, rows)}
 """)
@@ -505,25 +445,28 @@ meshes, 15.87 and 84.6 mm^3 on the paper's 0.01 / 0.05 mm mesh.
     def section(self, title, fn):
         try:
             fn()
-        except Missing as e:
-            self.add(f"## {title}\n\n*Not available: a run did not finish ({e} is missing; "
-                     "see its log.txt).*\n")
+        except MissingOutput as e:
+            self.add(f"## {title}\n\n*Not available: a run did not finish ({rel(e.path)} is "
+                     "missing; see its log.txt).*\n")
 
     # ---- Fig. 8 -------------------------------------------------------------------------
     def fig8(self):
         out = self.out
         P = {d: profiles(out, f"fig8_{d}") for d in ("out", "in")}
-        S = {d: at_end(series(out, f"fig8_{d}")) for d in ("out", "in")}
-        bfull = band(P["out"][0.0])
-        b = core(bfull)
+        S = {d: at_end(output(out, f"fig8_{d}").series) for d in ("out", "in")}
+        bfull = contact_band(P["out"][0.0])
+        b = band_core(bfull, TRIM)
         M = {d: film_metrics(P[d][max(P[d])], b) for d in P}
         steady = {d: steady_change(P[d], b) for d in P}
-        share = {d: S[d]["load_asperity"] / (S[d]["load_asperity"] + S[d]["load_fluid"])
-                 for d in P}
+        share = {d: asperity_share(S[d]) for d in P}
         ratio = {d: M[d]["taus_max"] / M[d]["tau_max"] for d in P}
         fratio = {d: abs(S[d]["friction_solid"] / S[d]["friction_fluid"]) for d in P}
-        hq = {d: flow_film(S[d]["Q_out"], S[d]["v"]) for d in P}
+        hq = {d: flow_film(S[d]["Q_out"], S[d]["v"], self.area(f"fig8_{d}")) for d in P}
         dry = self.dry_peak
+        h_mix = self.scene("fig8_out").asperity.h_mix
+        lo, hi = PAPER["fig8_p_max"]
+        film = PAPER["fig8_film"]
+        stroke = self.scene("fig8_out").stroke
         self.numbers["fig8"] = {"metrics": M, "share": share, "ratio": ratio, "hq": hq}
 
         plt = self.plt
@@ -536,8 +479,8 @@ meshes, 15.87 and 84.6 mm^3 on the paper's 0.01 / 0.05 mm mesh.
             a2.plot(pr["y"], pr["p"], c + "--", label=f"p_fl, {lab}")
             a2.plot(pr["y"], pr["p_asperity"], c + ":", lw=2, label=f"p_s, {lab}")
         ax[0].set_ylim(0, 1.5)
-        ax[0].axhline(H_MIX * 1e3, color="gray", lw=0.8)
-        ax[0].text(bfull[0] - 0.3, H_MIX * 1e3 + 0.02, "h_mix", color="gray", fontsize=8)
+        ax[0].axhline(h_mix * 1e3, color="gray", lw=0.8)
+        ax[0].text(bfull[0] - 0.3, h_mix * 1e3 + 0.02, "h_mix", color="gray", fontsize=8)
         ax[0].set_ylabel("film thickness h [um]")
         a2.set_ylabel("pressures p_fl, p_s [MPa]")
         a2.set_ylim(-0.6, 3.6)
@@ -571,15 +514,16 @@ meshes, 15.87 and 84.6 mm^3 on the paper's 0.01 / 0.05 mm mesh.
         neg = o["p_min"] < 0.0
         outlet = o["y_pmin"] > 0.5 * (b[0] + b[1])
         rows = [
-            ["film thickness in the contact", "about 1 um",
+            ["film thickness in the contact", f"about {um(film, 0)}",
              f"out: mean {um(o['h_mean'])}, min {um(o['h_min'])}; "
              f"in: mean {um(i['h_mean'])}, min {um(i['h_min'])}"],
             ["film that carries the flow, 2 Q / (A v)", "-",
              f"out {um(hq['out'])}, in {um(hq['in'])}"],
             ["lubrication state", "mixed",
-             f"mixed: asperities carry {100 * share['out']:.0f} % (out) and "
-             f"{100 * share['in']:.0f} % (in) of the rod load; h < h_mix = 0.7 um"],
-            ["peak fluid pressure", "3-3.5 MPa",
+             f"{word(min(share.values()) > 0.01, 'mixed', 'not mixed')}: asperities carry "
+             f"{100 * share['out']:.0f} % (out) and {100 * share['in']:.0f} % (in) of the rod "
+             f"load; min h {um(min(o['h_min'], i['h_min']))} against h_mix = {um(h_mix)}"],
+            ["peak fluid pressure", f"{lo:g}-{hi:g} MPa",
              f"out {mpa(o['p_max'])}, in {mpa(i['p_max'])}"],
             ["peak solid contact pressure", "out < in",
              f"out {mpa(o['pa_max'])}, in {mpa(i['pa_max'])}"],
@@ -600,15 +544,16 @@ meshes, 15.87 and 84.6 mm^3 on the paper's 0.01 / 0.05 mm mesh.
         ]
         st = ", ".join(f"{d}stroke {100 * steady[d][0]:.2g} %" for d in P)
         self.add(f"""
-## 1. Fig. 8: outstroke and instroke at 100 mm/s, p_in = 1 MPa
+## 1. Fig. 8: outstroke and instroke at {stroke.v_max:g} mm/s, p_in = {self.scene("fig8_out").fluid.p_in:g} MPa
 
 Scenes `paper_fig8_outstroke.toml` and `paper_fig8_instroke.toml`: from the pressurised
-state the rod ramps to +100 / -100 mm/s in 0.1 s and holds that speed to t = 1 s;
-long-term (hyperelastic) material, transient Reynolds, no flow factors, friction on.
-The profiles are those at t = 1 s. **Steady:** the film in the contact band changed by at
+state the rod ramps to +{stroke.v_max:g} / -{stroke.v_max:g} mm/s in {stroke.t_ramp:g} s and
+holds that speed to t = {stroke.t_end:g} s; long-term (hyperelastic) material, transient
+Reynolds, no flow factors, friction on. The profiles are those at t = {max(P['out']):g} s.
+**Steady:** the film in the contact band changed by at
 most {st} of its mean between t = {steady['out'][1]:g} s and {steady['out'][2]:g} s.
 The contact band (y = {bfull[0]:.2f} to {bfull[1]:.2f} mm) is where the asperity law carries
-load at rest; film statistics are taken over its inner 80 % (y = {b[0]:.2f} to {b[1]:.2f} mm),
+load at rest; film statistics are taken over its inner {100 * (1 - 2 * TRIM):.0f} % (y = {b[0]:.2f} to {b[1]:.2f} mm),
 clear of the steep flanks of the menisci. The plots show the current axial position y, the groove centred at y = 0, the
 sealed pressure on the left (small y).
 
@@ -626,22 +571,24 @@ fluid pressure {word(neg and outlet, 'turns negative at the outlet', 'does not t
 (no cavitation model, as in the paper).
 
 **Differences.** (i) *Peak fluid pressure* {mpa(o['p_max'])} against the paper's
-3-3.5 MPa. In soft EHL the film hardly moves the seal, so fluid plus asperity pressure
+{lo:g}-{hi:g} MPa. In soft EHL the film hardly moves the seal, so fluid plus asperity pressure
 stays close to the dry contact pressure: its peak here is {mpa(M['out']['total_max'])}
 (out) and {mpa(M['in']['total_max'])} (in), and the pressurised O-ring's dry contact peaks
-at {mpa(dry)} (2.71 MPa also on the paper's 0.01 mm mesh, README). A fluid pressure of
-3-3.5 MPa is more than this O-ring's whole contact pressure at 1 MPa, so the paper's seal
-presses harder on the rod than this one (its Fig. 8a pressure axis does reach 3.6 MPa),
+at {mpa(dry)} ({DRY_PEAK_PAPER_MESH:g} MPa on the paper's mesh, README). A fluid pressure of
+{lo:g}-{hi:g} MPa is {word(dry < lo, "more than this O-ring's whole contact pressure",
+"within this O-ring's contact pressure")} at {self.scene("fig8_out").fluid.p_in:g} MPa, so the paper's seal
+{word(dry < lo, "presses harder on the rod than this one", "need not press harder on the rod than this one")}
+(its Fig. 8a pressure axis does reach {PAPER['fig8_p_axis']:g} MPa),
 for reasons the paper does not give: its geometry and material (Table 3) are the ones used
 here, and it gives no dry contact pressure to compare. With the lower pressure
 and the asperities carrying {100 * share['out']:.0f}-{100 * share['in']:.0f} % of the load,
 the fluid peak is lower. (ii) *Film thickness*: {um(o['h_mean'])} (out) and
-{um(i['h_mean'])} (in) on average over the band, against "about 1 um". The paper's own
-mixed contact needs h below h_mix = 0.7 um where the asperities touch, so its "about 1 um"
+{um(i['h_mean'])} (in) on average over the band, against "about {um(film, 0)}". The paper's own
+mixed contact needs h below h_mix = {um(h_mix, 1)} where the asperities touch, so its "about {um(film, 0)}"
 is the order of the film (its Fig. 8a axis runs 0-1 um), not a film of 1 um throughout;
-here it is about half that. Coarse meshes thin the film: the film carried out on the
-README's cycle grows with refinement up to the 0.025 mm contact mesh (outstroke volume
-75.9, 78.9, 84.0, 83.6 mm^3 on the 0.1, 0.05, 0.025, 0.0125 mm contact meshes), and the
+here it is {100 * o['h_mean'] / film:.0f} % (out) and {100 * i['h_mean'] / film:.0f} % (in) of that.
+Coarse meshes thin the film: the film carried out on the README's cycle grows with
+refinement up to the 0.025 mm contact mesh (outstroke volume {study(2)}), and the
 inlet rise of the contact pressure, where
 the film forms, spans {self.inlet_elements:.0f} element{'' if self.inlet_elements == 1 else 's'} of this mesh.
 """)
@@ -651,59 +598,59 @@ the film forms, spans {self.inlet_elements:.0f} element{'' if self.inlet_element
         out = self.out
         L = profiles(out, "fig9_lt")
         V = profiles(out, "fig9_ve")
-        sv = series(out, "fig9_ve")
-        slt = series(out, "fig9_lt")
+        sv = output(out, "fig9_ve").series
+        slt = output(out, "fig9_lt").series
         sl = at_end(slt)
-        bfull = band(L[0.0])
-        b = core(bfull)
+        area = self.area("fig9_ve")
+        bfull = contact_band(L[0.0])
+        b = band_core(bfull, TRIM)
         lt = L[max(L)]
         steady = steady_change(L, b)
         times = [t for t in sorted(V) if t > 0.0]
         t0 = times[0]                    # end of the ramp
         t0h = 1.0 if 1.0 in V else t0     # the paper's "0 h": the film formed
-        hq_lt = flow_film(sl["Q_out"], sl["v"])
+        hq_lt = flow_film(sl["Q_out"], sl["v"], area)
         rows, diffs = [], {}
         for t in times:
             pr = V[t]
-            m = inside(pr, b)
-            d = pr["h"][m] - np.interp(pr["y"][m], lt["y"], lt["h"])
+            m = in_band(pr, b)
+            _, d = film_change(pr, lt, b)
             k = int(np.argmin(np.abs(sv["t"] - t)))
-            hq = flow_film(sv["Q_out"][k], sv["v"][k])
+            hq = flow_film(sv["Q_out"][k], sv["v"][k], area)
             diffs[t] = {"max": float(d.max()), "min": float(d.min()), "mean": float(d.mean()),
                         "hq": hq, "h_mean": float(pr["h"][m].mean())}
-            lab = f"{t:g} s" if t < 3600 else f"{t / 3600:g} h"
+            lab = self._when(t)
             rows.append([lab, f"{relaxation_modulus(t):.2f}", um(pr["h"][m].mean()),
                          um(pr["h"][m].min()), f"{d.mean() * 1e3:+.3f} um",
                          f"{d.min() * 1e3:+.3f} .. {d.max() * 1e3:+.3f} um", um(hq),
                          f"{(hq - hq_lt) * 1e3:+.3f} um"])
-        m = inside(lt, b)
+        m = in_band(lt, b)
         rows.append(["long-term, steady", "1", um(lt["h"][m].mean()), um(lt["h"][m].min()),
                      "0", "0", um(hq_lt), "0"])
         same = None
         if t0 in L:                      # the long-term film at the end of the ramp too
-            a, c = L[t0], V[t0]
-            mc = inside(c, b)
-            dd = c["h"][mc] - np.interp(c["y"][mc], a["y"], a["h"])
+            a = L[t0]
+            _, dd = film_change(V[t0], a, b)
             k = int(np.argmin(np.abs(slt["t"] - t0)))
             same = {"mean": float(dd.mean()), "max": float(dd.max()),
-                    "lt_mean": float(a["h"][inside(a, b)].mean()),
-                    "hq": flow_film(slt["Q_out"][k], slt["v"][k])}
+                    "lt_mean": float(a["h"][in_band(a, b)].mean()),
+                    "hq": flow_film(slt["Q_out"][k], slt["v"][k], area)}
             rows.append([f"long-term at {t0:g} s", "1", um(same["lt_mean"]),
-                         um(a["h"][inside(a, b)].min()), "", "", um(same["hq"]), ""])
+                         um(a["h"][in_band(a, b)].min()), "", "", um(same["hq"]), ""])
         self.numbers["fig9"] = {"diffs": diffs, "hq_lt": hq_lt, "same": same}
+        stroke = self.scene("fig9_ve").stroke
+        excess = PAPER["fig9_excess"]
 
         plt = self.plt
         fig, ax = plt.subplots(1, 3, figsize=(15, 4.4))
-        paper_times = [t for t in times if t in (t0h, 3600.0, 18000.0, 54000.0)]
+        paper_times = [t for t in times if t == t0h or t / 3600.0 in PAPER["fig9_hours"]]
         for t in times:
             pr = V[t]
-            lab = (f"viscoelastic, t = {t:g} s" if t < 3600 else
-                   f"viscoelastic, t = {t / 3600:g} h")
+            lab = f"viscoelastic, t = {self._when(t)}"
             style = "-" if t in paper_times else ":"
             ax[0].plot(pr["y"], pr["h"] * 1e3, style, label=lab)
-            m = inside(pr, b)
-            ax[1].plot(pr["y"][m], (pr["h"][m] - np.interp(pr["y"][m], lt["y"], lt["h"])) * 1e3,
-                       style, label=lab)
+            yb, d = film_change(pr, lt, b)
+            ax[1].plot(yb, d * 1e3, style, label=lab)
         ax[0].plot(lt["y"], lt["h"] * 1e3, "k-", lw=2.5, label="long-term (steady)")
         if same is not None:
             ax[0].plot(L[t0]["y"], L[t0]["h"] * 1e3, "k--", lw=1.2, label=f"long-term, t = {t0:g} s")
@@ -712,19 +659,20 @@ the film forms, spans {self.inlet_elements:.0f} element{'' if self.inlet_element
         ax[0].set_xlabel("axial position y [mm]")
         ax[0].set_ylabel("film thickness h [um]")
         ax[0].legend(fontsize=7)
-        ax[0].set_title("(a) film at 500 mm/s")
-        ax[1].axhline(0.15, color="gray", ls="--", lw=0.8)
-        ax[1].text(b[0], 0.155, "paper: at most +0.15 um (at 0 h)", color="gray", fontsize=8)
+        ax[0].set_title(f"(a) film at {stroke.v_max:g} mm/s")
+        ax[1].axhline(excess * 1e3, color="gray", ls="--", lw=0.8)
+        ax[1].text(b[0], excess * 1e3 + 0.005, f"paper: at most +{um(excess, 2)} (at 0 h)",
+                   color="gray", fontsize=8)
         ax[1].axhline(0.0, color="k", lw=0.8)
         ax[1].set_ylim(-0.25, 0.2)
         ax[1].set_xlabel("axial position y [mm] (contact band)")
         ax[1].set_ylabel("h viscoelastic - h long-term (steady) [um]")
         ax[1].set_title("(b) difference from the long-term film")
         keep = sv["t"] >= t0 * (1 - 1e-9)
-        ax[2].semilogx(sv["t"][keep], flow_film(sv["Q_out"][keep], sv["v"][keep]) * 1e3,
+        ax[2].semilogx(sv["t"][keep], flow_film(sv["Q_out"][keep], sv["v"][keep], area) * 1e3,
                        "C0.-", ms=3, label="viscoelastic")
         kl = slt["t"] >= t0 * (1 - 1e-9)
-        ax[2].semilogx(slt["t"][kl], flow_film(slt["Q_out"][kl], slt["v"][kl]) * 1e3,
+        ax[2].semilogx(slt["t"][kl], flow_film(slt["Q_out"][kl], slt["v"][kl], area) * 1e3,
                        "k.-", ms=3, label="long-term (to steady)")
         ax[2].axhline(hq_lt * 1e3, color="k", lw=0.8)
         ax[2].set_xlabel("time t [s] (from the end of the ramp)")
@@ -747,7 +695,7 @@ the film forms, spans {self.inlet_elements:.0f} element{'' if self.inlet_element
         decay = ", ".join(f"{t / 3600:g} h: {diffs[t]['mean'] * 1e3:+.3f}" for t in hours)
         F = abs(sl["friction_total"])
         F_peak = float(np.abs(sv["friction_total"]).max())
-        formed = [t for t in times if t >= 1.0] or times
+        formed = [t for t in times if t >= t0h]
         d_formed = max(abs(diffs[t]["mean"]) for t in formed)
         if same is not None:
             same_txt = (f"At the end of the ramp ({t0:g} s) both films are still forming; "
@@ -756,19 +704,23 @@ the film forms, spans {self.inlet_elements:.0f} element{'' if self.inlet_element
         else:
             same_txt = ""
         self.numbers["fig9"].update(t0h=t0h, d0h=d0["mean"], d15=dend["mean"], dmax=dmax)
+        tau = np.sort(table2().tau)
+        extra = [t for t in times if t not in paper_times and t != t0]
+        t_min = self.scene("fig9_ve").viscoelastic.t_min
         self.add(f"""
-## 2. Fig. 9: viscoelastic against long-term at 500 mm/s
+## 2. Fig. 9: viscoelastic against long-term at {stroke.v_max:g} mm/s
 
 Scenes `paper_fig9_viscoelastic.toml` (Table 2 Prony series, relaxed start from the
-pressurised long-term state; ramp to +500 mm/s in 0.1 s, then held to 54,000 s = 15 h;
-transient Reynolds; terms faster than 10 ms folded in as relaxed) and
+pressurised long-term state; ramp to +{stroke.v_max:g} mm/s in {stroke.t_ramp:g} s, then held
+to {stroke.t_end:,.0f} s = {self._when(stroke.t_end)}; transient Reynolds; terms faster than
+{self._when(t_min)} folded in as relaxed) and
 `paper_fig9_longterm.toml` (long-term material, the same ramp, held until steady: the film
 changed by {100 * steady[0]:.2g} % between t = {steady[1]:g} s and {steady[2]:g} s). The
 paper's "0 h" is taken as t = {t0h:g} s, when the film has formed ({t0h - t0:g} s after the
-ramp; the long-term film is steady from 0.5 s); {t0:g} s (the end of the ramp, the film
-still forming) and 10 s to 1000 s are extra times. G(t)/G_inf is Table 2's relaxation modulus for a load applied at t = 0: the stiffness
+ramp); {t0:g} s (the end of the ramp, the film still forming) and
+{", ".join(self._when(t) for t in extra) or "no other times"} are extra times. G(t)/G_inf is Table 2's relaxation modulus for a load applied at t = 0: the stiffness
 the seal meets for the stroke's loads. Films and differences are taken over the contact
-band without 10 % of its width at each end (y = {b[0]:.2f} to {b[1]:.2f} mm), where the
+band without {100 * TRIM:.0f} % of its width at each end (y = {b[0]:.2f} to {b[1]:.2f} mm), where the
 steep flanks of the menisci would turn tiny axial shifts into large differences of h.
 
 ![Fig. 9]({name})
@@ -777,9 +729,9 @@ steep flanks of the menisci would turn tiny axial shifts into large differences 
 
 | quantity | paper | sealts |
 |---|---|---|
-| viscoelastic film against long-term at "0 h" | thicker, by up to about 0.15 um | {word(d0['mean'] > 0, 'thicker', 'thinner')}: mean {d0['mean'] * 1e3:+.3f} um, range {d0['min'] * 1e3:+.3f} .. {d0['max'] * 1e3:+.3f} um at {t0h:g} s |
-| largest excess over long-term, any time | about 0.15 um | {dmax * 1e3:+.3f} um |
-| over 1, 5, 15 h | decays towards long-term from above | mean difference {decay} um |
+| viscoelastic film against long-term at "0 h" | thicker, by up to about {um(excess, 2)} | {word(d0['mean'] > 0, 'thicker', 'thinner')}: mean {d0['mean'] * 1e3:+.3f} um, range {d0['min'] * 1e3:+.3f} .. {d0['max'] * 1e3:+.3f} um at {t0h:g} s |
+| largest excess over long-term, any time | about {um(excess, 2)} | {dmax * 1e3:+.3f} um |
+| over {", ".join(f"{x:g}" for x in PAPER["fig9_hours"])} h | decays towards long-term from above | mean difference {decay} um |
 
 **Difference.** {self._fig9_summary(diffs, times, t0h, dend, d_formed, course, same_txt)}
 
@@ -789,13 +741,14 @@ pressure. In soft EHL the film follows from that pressure profile (inverse theor
 h* = sqrt(8 eta v / (9 w)) from the steepest inlet rise w, Fig. 12), not from the seal's
 stiffness. The stroke's own loads - the film pressure taking over from the asperities and
 the friction drag (up to {F_peak:.0f} N while the rod starts sliding, {F:.0f} N once the
-film carries the seal at 500 mm/s) - meet a seal {relaxation_modulus(1.0):.1f} times
+film carries the seal at {stroke.v_max:g} mm/s) - meet a seal {relaxation_modulus(1.0):.1f} times
 stiffer than long-term at 1 s and {relaxation_modulus(3600.0):.1f} times at 1 h, which
 deforms less at first and creeps later, but these loads move the inlet gradient only a
 little, so the film moves only a little. What in the paper's set-up makes its
-viscoelastic film 0.15 um thicker at 0 h, relaxing over hours (the time scale of Table 2's
-terms 14-15, 3,013 s and 24,784 s), is not stated; with a relaxed start, as MODEL.md
-describes the paper's step 3, sealts gets {word(dmax > 0, f"{100 * dmax / 0.15e-3:.0f} % of that excess at most", "no excess")}.
+viscoelastic film {um(excess, 2)} thicker at 0 h, relaxing over hours (the time scale of
+Table 2's two slowest terms, {tau[-2]:,.0f} s and {tau[-1]:,.0f} s), is not stated; with a
+relaxed start (the scenes' reading of the paper's step 3), sealts gets
+{word(dmax > 0, f"{100 * dmax / excess:.0f} % of that excess at most", "no excess")}.
 A start that is not relaxed would change the contact pressure itself and is the next
 thing to test.
 """)
@@ -805,19 +758,21 @@ thing to test.
         later = [diffs[t]["mean"] for t in times if t >= t0h]
         decays = (d0["mean"] > 0.0 and all(a >= b - 1e-6 for a, b in zip(later, later[1:])))
         dmax = max(v["max"] for v in diffs.values())
+        end, slowest = self._when(times[-1]), table2().tau.max()
+        unrelaxed = f"{100 * np.exp(-times[-1] / slowest):.0f} % unrelaxed"
+        excess = um(PAPER["fig9_excess"], 2)
         if decays:
             t = (f"As in the paper, the viscoelastic film is thicker than the long-term one at "
                  f"0 h and decays towards it over hours ({dend['mean'] * 1e3:+.3f} um on "
-                 f"average at 15 h, when Table 2's slowest term, 24,784 s, is still "
-                 f"{100 * np.exp(-54000 / 24784.03514):.0f} % unrelaxed); but the excess is "
+                 f"average at {end}, when Table 2's slowest term, {slowest:,.0f} s, is still "
+                 f"{unrelaxed}); but the excess is "
                  f"{d0['mean'] * 1e3:+.3f} um on average and {dmax * 1e3:+.3f} um at most, "
-                 f"not about 0.15 um. ")
+                 f"not about {excess}. ")
         else:
             t = (f"sealts finds the viscoelastic film within {d_formed * 1e3:.3f} um (mean over "
                  f"the band) of the long-term one once the film has formed ({course}, ending "
-                 f"{dend['mean'] * 1e3:+.3f} um from it at 15 h, when Table 2's slowest term "
-                 f"is still {100 * np.exp(-54000 / 24784.03514):.0f} % unrelaxed), not "
-                 "thicker by about 0.15 um. ")
+                 f"{dend['mean'] * 1e3:+.3f} um from it at {end}, when Table 2's slowest term "
+                 f"is still {unrelaxed}), not thicker by about {excess}. ")
         return t + same_txt + " The sign and size of so small a difference depend on the mesh (see the mesh check at the end)."
 
     @staticmethod
@@ -829,42 +784,46 @@ thing to test.
         from sealts.film.flow_factors import FlowFactors
         plt = self.plt
         h = np.linspace(0.0, 5e-3, 501)
-        ff = FlowFactors.patir_cheng(RQ, 1.0)
+        film = self.scene("fig11_ff").film
+        rq, gamma = film.rq, film.gamma
+        ff = FlowFactors.patir_cheng(rq, gamma, film.rough_surface)
         pp, _, ps, _ = ff.evaluate(h)
-        tr = FlowFactors.patir_cheng(RQ, 1 / 9)
+        tr = FlowFactors.patir_cheng(rq, 1 / 9, film.rough_surface)
         pp9, _, ps9, _ = tr.evaluate(h)
         fig, ax = plt.subplots(figsize=(6.5, 4.2))
-        ax.plot(h * 1e3, pp, "C0-", lw=2, label="Phi_p, gamma = 1 (used)")
-        ax.plot(h * 1e3, ps, "C3-", lw=2, label="Phi_s, gamma = 1 (used)")
+        ax.plot(h * 1e3, pp, "C0-", lw=2, label=f"Phi_p, gamma = {gamma:.3g} (used)")
+        ax.plot(h * 1e3, ps, "C3-", lw=2, label=f"Phi_s, gamma = {gamma:.3g} (used)")
         ax.plot(h * 1e3, pp9, "C0:", label="Phi_p, gamma = 1/9 (transverse)")
         ax.plot(h * 1e3, ps9, "C3:", label="Phi_s, gamma = 1/9 (transverse)")
-        ax.axvline(0.5 * RQ * 1e3, color="gray", lw=0.8)
-        ax.text(0.5 * RQ * 1e3 + 0.03, 1.9, "H = 0.5: fits end,\nC1 extension below",
+        ax.axvline(0.5 * rq * 1e3, color="gray", lw=0.8)
+        ax.text(0.5 * rq * 1e3 + 0.03, 1.9, "H = 0.5: fits end,\nC1 extension below",
                 fontsize=7, color="gray", va="top")
         ax.set_xlim(0, 5)
         ax.set_ylim(0, 2)
         ax.set_xlabel("film thickness h [um]")
         ax.set_ylabel("flow factors Phi_p, Phi_s [-]")
-        ax.set_title(f"Patir-Cheng flow factors, Rq = {RQ * 1e3:.3f} um")
+        ax.set_title(f"Patir-Cheng flow factors, Rq = {rq * 1e3:.3f} um")
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
         name10 = self.savefig(fig, "fig10_flow_factors.png")
         hs = np.array([0.1, 0.25, 0.5, 1.0, 2.0, 5.0]) * 1e-3
         pp_s, _, ps_s, _ = ff.evaluate(hs)
-        rows10 = [[f"{x * 1e3:g}", f"{x / RQ:.2f}", f"{a:.3f}", f"{c:.3f}"]
+        rows10 = [[f"{x * 1e3:g}", f"{x / rq:.2f}", f"{a:.3f}", f"{c:.3f}"]
                   for x, a, c in zip(hs, pp_s, ps_s)]
 
         out = self.out
         P0 = profiles(out, "fig8_out")
         P1 = profiles(out, "fig11_ff")
-        S0 = at_end(series(out, "fig8_out"))
-        S1 = at_end(series(out, "fig11_ff"))
-        bfull = band(P0[0.0])
-        b = core(bfull)
+        S0 = at_end(output(out, "fig8_out").series)
+        S1 = at_end(output(out, "fig11_ff").series)
+        bfull = contact_band(P0[0.0])
+        b = band_core(bfull, TRIM)
         a, c = P0[max(P0)], P1[max(P1)]
         M0, M1 = film_metrics(a, b), film_metrics(c, b)
         steady = steady_change(P1, b)
-        hq0, hq1 = flow_film(S0["Q_out"], S0["v"]), flow_film(S1["Q_out"], S1["v"])
+        hq0 = flow_film(S0["Q_out"], S0["v"], self.area("fig8_out"))
+        hq1 = flow_film(S1["Q_out"], S1["v"], self.area("fig11_ff"))
+        stroke = self.scene("fig11_ff").stroke
         fig, ax = plt.subplots(1, 2, figsize=(12, 4.4))
         a2 = ax[0].twinx()
         for pr, st, lab in ((a, "-", "no flow factors"), (c, "--", "flow factors")):
@@ -880,7 +839,7 @@ thing to test.
         h1, l1 = ax[0].get_legend_handles_labels()
         h2, l2 = a2.get_legend_handles_labels()
         ax[0].legend(h1 + h2, l1 + l2, fontsize=7, loc="upper left", ncol=2)
-        ax[0].set_title("(a) outstroke +100 mm/s: film and pressures")
+        ax[0].set_title(f"(a) outstroke +{stroke.v_max:g} mm/s: film and pressures")
         a3 = ax[1].twinx()
         for pr, st, lab in ((a, "-", "no flow factors"), (c, "--", "flow factors")):
             ax[1].plot(pr["y"], pr["tau"] * 1e3, "C0" + st, label=f"tau_fl, {lab}")
@@ -899,8 +858,7 @@ thing to test.
         ax[1].legend(h1 + h2, l1 + l2, fontsize=7, loc="lower center")
         ax[1].set_title("(b) shear stresses on the seal")
         name11 = self.savefig(fig, "fig11_flow_factors.png")
-        share0 = S0["load_asperity"] / (S0["load_asperity"] + S0["load_fluid"])
-        share1 = S1["load_asperity"] / (S1["load_asperity"] + S1["load_fluid"])
+        share0, share1 = asperity_share(S0), asperity_share(S1)
         rows = [
             ["peak fluid pressure", "higher with", mpa(M0["p_max"]), mpa(M1["p_max"])],
             ["mean film in the band", "thicker with", um(M0["h_mean"]), um(M1["h_mean"])],
@@ -923,9 +881,9 @@ thing to test.
 
 **The choice.** The paper's flow factors (its Fig. 10) were computed for its turned rod
 with a code of its own and are published only as a plot. sealts uses Patir and Cheng's
-published fits instead (`[film] flow_factors = "patir-cheng"`), for isotropic Gaussian
-roughness (Peklenik number gamma = 1), with the paper's composite roughness
-Rq = 2.15e-4 mm (Table 3) on the seal, so that the shear-flow term has the sign Eq. 13
+published fits instead (`[film] flow_factors = "patir-cheng"`), for Gaussian
+roughness of Peklenik number gamma = {gamma:.3g}{word(gamma == 1.0, " (isotropic)", "")}, with the
+paper's composite roughness Rq = {rq:.2e} mm (Table 3) on the {film.rough_surface}, so that the shear-flow term has the sign Eq. 13
 prints (h - Rq Phi_s). Below H = h/Rq = 0.5, where the fits end, sealts continues them C1
 and monotone towards 0 (`sealts/film/flow_factors.py`). The paper's Phi_p rises from 0 at
 h = 0 to 1 at about 5 um and its Phi_s is a bump; here Phi_p rises from {pp[0]:.2f} at
@@ -940,7 +898,7 @@ this report does not run.
 {table(["h [um]", "H = h/Rq", "Phi_p", "Phi_s"], rows10)}
 
 Scene `paper_fig11_flowfactors.toml` is `paper_fig8_outstroke.toml` (steady outstroke at
-+100 mm/s, p_in = 1 MPa, long-term) with these flow factors; steady: the film changed by
++{stroke.v_max:g} mm/s, p_in = {self.scene("fig11_ff").fluid.p_in:g} MPa, long-term) with these flow factors; steady: the film changed by
 {100 * steady[0]:.2g} % between t = {steady[1]:g} s and {steady[2]:g} s.
 
 ![Fig. 11]({name11})
@@ -951,12 +909,13 @@ Scene `paper_fig11_flowfactors.toml` is `paper_fig8_outstroke.toml` (steady outs
 {word(hi_p, 'higher', 'lower')}, the film {word(thick, 'thicker', 'thinner')} and the solid
 contact pressure {word(low_s, 'lower', 'higher')}{word(hi_p and thick and low_s, ', as in the paper', '')}.
 Phi_p < 1 throttles the pressure flow, so the same flow needs steeper gradients and the
-film must open to pass it. The flow itself *falls* (flow film {um(hq0)} without,
+film must open to pass it. The flow itself *{word(hq1 < hq0, 'falls', 'rises')}* (flow film {um(hq0)} without,
 {um(hq1)} with): at the pressure peak q = v (h - Rq Phi_s) / 2, and the shear-flow term of
-a rough seal, Rq Phi_s = {um(RQ * float(ff.evaluate(np.array([M1['h_at_pmax']]))[2][0]))}
-there, is taken off the Couette flow. So flow factors carry less out of the seal on the
-outstroke; what raises the cycle's net leakage (Fig. 14) is that they carry still less
-back on the instroke. The changes are small because in the contact band h/Rq = {M0['h_mean'] / RQ:.1f} on average, where
+a rough seal, Rq Phi_s = {um(rq * float(ff.evaluate(np.array([M1['h_at_pmax']]))[2][0]))}
+there, is taken off the Couette flow. So flow factors carry {word(hq1 < hq0, 'less', 'more')} out
+of the seal on the outstroke; how they change the cycle's net leakage depends on what they
+carry back on the instroke (Fig. 14). The changes are small because in the contact band
+h/Rq = {M0['h_mean'] / rq:.1f} on average, where
 Phi_p = {float(ff.evaluate(np.array([M0['h_mean']]))[0][0]):.2f}: the paper's factors, for a
 rougher turned surface, may act more strongly; their size is not given as numbers.
 """)
@@ -970,27 +929,33 @@ rougher turned surface, may act more strongly; their size is not given as number
         self.numbers["fig12"] = {}
         self.ihl_check = []
         for k, v in enumerate((100, 500)):
+            key = f"fig12_{v}"
             try:
-                P = profiles(out, f"fig12_{v}")
-                S = at_end(series(out, f"fig12_{v}"))
-            except Missing:
+                P = profiles(out, key)
+                S = at_end(output(out, key).series)
+            except MissingOutput:
                 ax[k].set_title(f"({'ab'[k]}) {v} mm/s: not run")
                 continue
             ih, ip, src = self.ihl_dry(v)
-            bfull = band(P[0.0])
-            b = core(bfull)
+            bfull = contact_band(P[0.0])
+            b = band_core(bfull, TRIM)
             pr = P[max(P)]
             M = film_metrics(pr, b)
             steady = steady_change(P, b)
-            hq = flow_film(S["Q_out"], S["v"])
+            hq = flow_film(S["Q_out"], S["v"], self.area(key))
             hs = ih["outstroke"]["h_star"]
-            share = S["load_asperity"] / (S["load_asperity"] + S["load_fluid"])
-            h_ihl = ihl_film(ip["y"], ip["p"], ip["dp_dy"], float(v), hs,
-                             ih["outstroke"]["y_w"])
+            share = asperity_share(S)
+            y_w = ih["outstroke"]["y_w"]
+            h_ihl = ihl_film(ip["y"], ip["p"], ip["dp_dy"], float(v), hs, y_w,
+                             self.scene(f"ihl12_{v}").fluid.viscosity)
+            i0, iw = inlet_nodes(ip, y_w, 1.0)
             self.numbers["fig12"][v] = {"hq": hq, "h_star": hs, "share": share, "M": M,
                                         "src": src,
                                         "ripple": ripple(pr, b),
-                                        "inlet": inlet_span(ip, ih["outstroke"]["y_w"], 1.0)}
+                                        "inlet": inlet_span(ip, y_w, 1.0),
+                                        "inlet_gaps": (ip["h"][i0], ip["h"][iw],
+                                                       abs(ip["y"][iw] - ip["y"][i0])),
+                                        "h_mix": self.scene(key).asperity.h_mix}
             rows.append([f"{v} mm/s", um(hs), um(hq), f"{100 * (hq / hs - 1):+.0f} %",
                          um(M["h_at_pmax"]), um(M["h_min"]),
                          f"{100 * share:.1f} %", mpa(M["p_max"]), mpa(ip["p"].max()),
@@ -1028,12 +993,13 @@ Only {', '.join(f'{v} mm/s' for v in n) or 'no speed'} ran here; IHL from {', '.
             return
         d100 = n[100]["hq"] / n[100]["h_star"] - 1
         d500 = n[500]["hq"] / n[500]["h_star"] - 1
+        stroke = self.scene("fig12_500").stroke
         self.add(f"""
 ## 4. Fig. 12: EHL against IHL, p_in = p_out = 0
 
 Scenes `paper_fig12_100.toml` and `paper_fig12_500.toml`: the O-ring mounted dry without
-pressure (`paper_state_0mpa.toml`), the rod ramped to +100 / +500 mm/s in 0.1 s and held
-to t = 1 s (long-term material; transient Reynolds run to steady, friction on). IHL:
+pressure (`paper_state_0mpa.toml`), the rod ramped to +100 / +500 mm/s in
+{stroke.t_ramp:g} s and held to t = {stroke.t_end:g} s (long-term material; transient Reynolds run to steady, friction on). IHL:
 `sealts ihl` on `paper_fig12_ihl.toml` at 100 and 500 mm/s (the same dry mounted seal):
 h* = sqrt(8 eta v / (9 w)) from the steepest inlet rise w of the dry contact pressure. The
 IHL film profile in the figure is Blok's construction from the same profile
@@ -1075,19 +1041,21 @@ peak of a steady, smooth film). {self._ihl_check_text()}
         which is what `sealts ihl` computes at p_in = 0. With both, the two are compared
         (``ihl_check``)."""
         from sealts.film.ihl import ihl_estimate, pressure_gradient
+        key = f"ihl12_{v}"
         dry = None
         try:
-            pr = profiles(self.out, "state_0mpa", "profiles.csv")
+            pr = profiles(self.out, "state_0mpa", "profiles")
             pr = pr[max(pr)]
             y, p = pr["y"], pr["p_contact"]
-            dry = (ihl_estimate(y, p, ETA, float(v), AREA),
-                   {"y": y, "p_contact": p, "p": p, "dp_dy": pressure_gradient(y, p)})
-        except Missing:
+            dry = (ihl_estimate(y, p, self.scene(key).fluid.viscosity, float(v), self.area(key)),
+                   {"y": y, "h": pr["h"], "p_contact": p, "p": p,
+                    "dp_dy": pressure_gradient(y, p)})
+        except MissingOutput:
             pass
         try:
-            ih = summary(self.out, f"ihl12_{v}")["ihl"]
-            ip = profiles(self.out, f"ihl12_{v}", "ihl_profile.csv")[0.0]
-        except Missing:
+            ih = output(self.out, key).summary["ihl"]
+            ip = profiles(self.out, key, "ihl_profile")[0.0]
+        except MissingOutput:
             if dry is None:
                 raise
             return dry[0], dry[1], "the mounted state's dry profile (`sealts ihl`'s computation)"
@@ -1100,9 +1068,12 @@ peak of a steady, smooth film). {self._ihl_check_text()}
         t = (f"The EHL film is {word(closer, 'closer to', 'further from')} the IHL estimate at "
              f"500 mm/s ({100 * d500:+.0f} %) than at 100 mm/s ({100 * d100:+.0f} %), "
              f"{word(closer, 'the trend the paper reports', 'against the paper')}. ")
+        h_mix = n[500]["h_mix"]
         if n[500]["share"] > 0.01:
             t += (f"At 500 mm/s the film here is still not fully separated: the IHL film "
-                  f"h* = {um(n[500]['h_star'])} exceeds h_mix = 0.7 um only slightly, the EHL "
+                  f"h* = {um(n[500]['h_star'])} "
+                  f"{word(n[500]['h_star'] > h_mix, 'exceeds', 'is below')} h_mix = "
+                  f"{um(h_mix)}, the EHL "
                   f"film is thinner ({um(n[500]['M']['h_min'])} at its minimum) and the "
                   f"asperities carry {100 * n[500]['share']:.1f} % of the load, so the two do "
                   "not coincide as they do in the paper. ")
@@ -1111,12 +1082,13 @@ peak of a steady, smooth film). {self._ihl_check_text()}
                   f"{100 * n[500]['share']:.1f} % of the load, at the outlet) and EHL and IHL "
                   f"pressures lie on top of each other, as in the paper. ")
         ne = n[500]["inlet"]
+        g0, gw, dy = n[500]["inlet_gaps"]
         t += ("What separates the two films at 500 mm/s is where IHL reads its w: the "
               "largest nodal gradient of the dry pressure, which a dry O-ring contact has "
               "at its very edge, where the pressure rises almost like a Hertzian square root "
-              "and only the asperity law (gaps between about 1 and 0.55 um, a few "
-              "hundredths of a millimetre) rounds it. On this mesh the rise from the first "
-              f"node in contact to the steepest point spans {ne:.0f} "
+              "and only the asperity law rounds it. On this mesh the rise from the first "
+              f"node in contact (gap {um(g0)}) to the steepest point (gap {um(gw)}, "
+              f"{dy:.3f} mm further) spans {ne:.0f} "
               f"element{'' if ne == 1 else 's'}; as the mesh resolves the edge, w grows and "
               "h* falls, while the EHL film, which needs no gradient of the dry profile, "
               "settles. ")
@@ -1137,7 +1109,8 @@ peak of a steady, smooth film). {self._ihl_check_text()}
               "unchanged; nothing in the film resists it and only the seal's stiffness "
               "limits it. The flow (an element mean) hardly notices. "
               + self._ripple_across())
-        t += (f"At 100 mm/s IHL's h* = {um(n[100]['h_star'])} is far below h_mix: IHL assumes "
+        t += (f"At 100 mm/s IHL's h* = {um(n[100]['h_star'])} is "
+              f"{word(n[100]['h_star'] < h_mix, 'below', 'above')} h_mix: IHL assumes "
               "the fluid carries the whole contact pressure, while here the asperities carry "
               f"{100 * n[100]['share']:.0f} % of it, so the fluid's pressure profile is flatter "
               "than the dry one and the film differs, as the paper explains.")
@@ -1151,9 +1124,9 @@ peak of a steady, smooth film). {self._ihl_check_text()}
         rows, net, qr, tr = [], {}, {}, {}
         for key, tag, what in FIG14:
             try:
-                s = series(out, key)
-                st = summary(out, key)["stroke"]
-            except Missing:
+                s = output(out, key).series
+                st = output(out, key).summary["stroke"]
+            except MissingOutput:
                 rows.append([tag, what, "(missing)"] + [""] * 8)
                 continue
             net[tag] = st["leakage_out"]
@@ -1170,17 +1143,20 @@ peak of a steady, smooth film). {self._ihl_check_text()}
                          f"{st['peak_friction_outstroke']:.1f} / {st['peak_friction_instroke']:.1f}",
                          f"{st['h_min'] * 1e3:.3f}",
                          f"{st['steps_accepted']} / {st['steps_rejected']}"])
-        ih = summary(out, "ihl14")["ihl"]
-        t = np.linspace(0.0, 10.0, 4001)
-        v = 500.0 * np.sin(2 * np.pi * t / 10.0)
-        hs = np.where(v >= 0, ih["outstroke"]["h_star"], ih["instroke"]["h_star"])
-        q_ihl = 0.5 * AREA * v * hs * np.sqrt(np.abs(v) / ih["speed"])
-        v_ihl = np.concatenate([[0.0], np.cumsum(0.5 * (q_ihl[1:] + q_ihl[:-1]) * np.diff(t))])
+        from sealts.contact.rod_motion import motion_from_scene
+        ih = output(out, "ihl14").summary["ihl"]
+        stroke = self.scene("fig14_he").stroke
+        motion = motion_from_scene(stroke)
+        t = np.linspace(0.0, stroke.t_end, 4001)
+        v = np.array([motion.v(x) for x in t])
+        q_ihl = ihl_flow(v, ih["outstroke"]["h_star"], ih["instroke"]["h_star"], ih["speed"],
+                         self.area("ihl14"))
+        v_ihl = cumulative_volume(t, q_ihl)
         ax[0].plot(t, q_ihl, "k--", lw=1, label="Q IHL")
         ax[1].plot(t, v_ihl, "k--", lw=1, label="V IHL")
-        out_ihl = float(v_ihl[t <= 5.0][-1])
+        out_ihl = float(cumulative_volume(t, np.maximum(q_ihl, 0.0))[-1])
         net_ihl = float(v_ihl[-1])
-        rows.append(["IHL", "`sealts ihl` films at 500 mm/s, h* ~ sqrt(|v|)",
+        rows.append(["IHL", f"`sealts ihl` films at {ih['speed']:g} mm/s, h* ~ sqrt(|v|)",
                      f"{net_ihl:.2f}", f"{out_ihl:.1f}", f"{out_ihl - net_ihl:.1f}",
                      f"{out_ihl / (out_ihl - net_ihl):.3f}",
                      f"{q_ihl.min():.1f} .. {q_ihl.max():.1f}", "-", "-",
@@ -1191,29 +1167,37 @@ peak of a steady, smooth film). {self._ihl_check_text()}
             a.grid(alpha=0.3)
             a.legend(fontsize=8)
         ax[0].set_ylabel("volume flow rate Q_out [mm^3/s]")
-        ax[0].axhline(50, color="gray", ls=":", lw=0.8)
-        ax[0].axhline(-30, color="gray", ls=":", lw=0.8)
-        ax[0].text(0.2, 46, "paper's range: about -30 to +50", color="gray", fontsize=7)
+        q_lo, q_hi = PAPER["fig14_q"]
+        ax[0].axhline(q_hi, color="gray", ls=":", lw=0.8)
+        ax[0].axhline(q_lo, color="gray", ls=":", lw=0.8)
+        ax[0].text(0.2, q_hi - 4, f"paper's range: about {q_lo:g} to +{q_hi:g}", color="gray",
+                   fontsize=7)
         ax[0].set_title("(a) flow out of the seal at the atmosphere side")
         ax[1].set_ylabel("leakage volume V_out [mm^3]")
-        ax[1].plot([10.0], [100.0], "k*", ms=9, label="paper: ve,sq,Φ net (about 100)")
+        ax[1].plot([stroke.t_end], [PAPER["fig14_net"]], "k*", ms=9,
+                   label=f"paper: ve,sq,Φ net (about {PAPER['fig14_net']:g})")
         ax[1].legend(fontsize=8)
         ax[1].set_title("(b) leakage volume")
         name = self.savefig(fig, "fig14_leakage.png")
         self.numbers["fig14"] = {"net": net, "ihl": net_ihl}
         order = self._fig14_order(net)
+        starts = [f"{x:g}" for x in [0.0] + motion.reversals(stroke.t_end)]
+        starts = " and ".join(filter(None, [", ".join(starts[:-1]), starts[-1]]))
         self.add(f"""
-## 5. Fig. 14: leakage over the 10 s cycle
+## 5. Fig. 14: leakage over the {stroke.t_end:g} s cycle
 
 Scenes `paper_fig14_he/ve/ve_sq/ve_sq_ff.toml`: the paper's cycle (Fig. 13),
-v = 500 sin(2 pi t / 10 s) mm/s, outstroke first, from the pressurised state; friction on.
+v = {stroke.v_max:g} sin(2 pi t / {stroke.period:g} s) mm/s, outstroke first, from the
+pressurised state; friction on.
 "Steady Reynolds" is `[film] squeeze = false` (the paper's cases without "sq"); the
-viscoelastic runs use Table 2 from a relaxed start (terms faster than 1 ms folded in);
+viscoelastic runs use Table 2 from a relaxed start (terms faster than
+{self._when(self.scene("fig14_ve").viscoelastic.t_min)} folded in);
 flow factors as in Fig. 11. Q_out and V_out are the flow and volume leaving the film at
-the atmosphere side (+ = out of the cylinder); the short spikes at t = 0 and 5 s in the
+the atmosphere side (+ = out of the cylinder); the short spikes at t = {starts} s in the
 squeeze variants are squeeze flow while the friction builds up after a reversal and the
 seal shifts; the ve curves lie under the ve,sq ones. The IHL line is `sealts ihl` on
-`paper_fig14_ihl.toml` (dry, pressurised to 1 MPa, 500 mm/s): the flow A v h*(|v|)/2 with
+`paper_fig14_ihl.toml` (dry, pressurised to {self.scene("ihl14").fluid.p_in:g} MPa,
+{ih['speed']:g} mm/s): the flow A v h*(|v|)/2 with
 h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
 
 ![Fig. 14]({name})
@@ -1224,11 +1208,11 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
 |---|---|---|
 | order of the net leakage | he < ve = ve,sq < ve,sq,Φ | {order} |
 | squeeze term | negligible | ve,sq - ve = {self._diff(net, 've,sq', 've')} mm^3 |
-| net leakage, ve,sq,Φ | about 100 mm^3 | {net.get('ve,sq,Φ', float('nan')):.1f} mm^3 |
-| Q over the cycle | about -30 to +50 mm^3/s | {self._qrange(qr)} |
+| net leakage, ve,sq,Φ | about {PAPER['fig14_net']:g} mm^3 | {net.get('ve,sq,Φ', float('nan')):.1f} mm^3 |
+| Q over the cycle | about {q_lo:g} to +{q_hi:g} mm^3/s | {self._qrange(qr)} |
 | IHL net leakage | - | {net_ihl:.1f} mm^3 |
 
-**Differences.** {self._fig14_text(net, net_ihl, qr, tr, ih)}
+**Differences.** {self._fig14_text(net, net_ihl, out_ihl, qr, tr, ih)}
 """)
 
     @staticmethod
@@ -1252,12 +1236,14 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
         items = sorted(net.items(), key=lambda kv: kv[1])
         return " < ".join(f"{k} ({v:.1f})" for k, v in items)
 
-    def _fig14_text(self, net, net_ihl, qr, tr, ih):
+    def _fig14_text(self, net, net_ihl, out_ihl, qr, tr, ih):
         he, ve, vs, vf = (net.get(k) for k in ("he", "ve", "ve,sq", "ve,sq,Φ"))
         t = []
         if None not in (he, ve, vs):
+            small = abs(vs - ve) < 0.05 * abs(ve)
             t.append(f"The squeeze term changes the viscoelastic leakage by "
-                     f"{abs(vs - ve):.2f} mm^3, negligible as in the paper. ")
+                     f"{abs(vs - ve):.2f} mm^3 ({100 * abs(vs / ve - 1):.1f} %), "
+                     f"{word(small, 'negligible as in the paper', 'unlike the paper')}. ")
             (ho, hb), (vo, vb) = tr["he"], tr["ve"]
             more = vo > ho
             mech = ", the mechanism the paper gives (a thicker film, Fig. 9)" if more else ""
@@ -1274,35 +1260,50 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
                      "holds it to what the stroke's loads do to a stiffer seal. ")
         if vf is not None and vs is not None:
             (fo, fb), (so, sb) = tr["ve,sq,Φ"], tr["ve,sq"]
-            t.append(f"Flow factors raise the net leakage to {vf:.1f} mm^3 "
-                     f"({vf / vs:.2f} times ve,sq), the largest of the four, as in the paper. "
-                     f"They carry less out ({fo:.1f} against {so:.1f} mm^3: the shear-flow "
-                     f"term, Fig. 11) and still less back ({fb:.1f} against {sb:.1f}), so the "
-                     f"ratio of outward to inward transport grows ({fo / fb:.3f} against "
-                     f"{so / sb:.3f}), the mechanism the paper names. ")
-            t.append(f"The absolute level is about {100 / max(vf, 1e-9):.0f} times below the "
-                     "paper's 100 mm^3. The net leakage is a small difference of two large "
+            largest = vf >= max(net.values())
+            t.append(f"Flow factors {word(vf > vs, 'raise', 'lower')} the net leakage to "
+                     f"{vf:.1f} mm^3 ({vf / vs:.2f} times ve,sq), "
+                     f"{word(largest, 'the largest of the four, as in the paper', 'not the largest of the four, unlike the paper')}. "
+                     f"They carry {word(fo < so, 'less', 'more')} out ({fo:.1f} against "
+                     f"{so:.1f} mm^3: the shear-flow term, Fig. 11) and "
+                     f"{word(fb < sb, 'less', 'more')} back ({fb:.1f} against {sb:.1f}), so "
+                     f"the ratio of outward to inward transport "
+                     f"{word(fo / fb > so / sb, 'grows', 'falls')} ({fo / fb:.3f} against "
+                     f"{so / sb:.3f}){word(fo / fb > so / sb, ', the mechanism the paper names', '')}. ")
+            paper = PAPER["fig14_net"]
+            fig8 = self.numbers.get("fig8", {}).get("metrics", {}).get("out")
+            fig9 = self.numbers.get("fig9", {}).get("dmax")
+            film = (f"the film is {100 * fig8['h_mean'] / PAPER['fig8_film']:.0f} % of the "
+                    "paper's (Fig. 8)" if fig8 else "the film is thinner than the paper's (Fig. 8)")
+            gain = (f"{100 * fig9 / PAPER['fig9_excess']:.0f} % of the paper's (Fig. 9)"
+                    if fig9 is not None else "a fraction of the paper's (Fig. 9)")
+            t.append(f"The absolute level is about {paper / max(vf, 1e-9):.0f} times below the "
+                     f"paper's {paper:g} mm^3. The net leakage is a small difference of two large "
                      f"transports (about {tr['he'][0]:.0f} mm^3 out and {tr['he'][1]:.0f} back), "
-                     "and (i) it converges only from the 0.025 mm contact mesh on (11.05 / "
-                     "12.40 / 15.88 / 15.49 mm^3 on the 0.1 / 0.05 / 0.025 / 0.0125 mm "
-                     "contact meshes for the hyperelastic cycle, 15.87 on the paper's), (ii) the film is about half the paper's (Fig. 8), (iii) the "
+                     "and (i) it converges only from the 0.025 mm contact mesh on (net "
+                     f"leakage {study(1)} for the hyperelastic cycle), (ii) {film}, (iii) the "
                      "flow factors are not the paper's, and (iv) the viscoelastic film gain is "
-                     "a fraction of the paper's (Fig. 9). ")
+                     f"{gain}. ")
         if qr:
             lo = min(a for a, _ in qr.values())
             hi = max(b for _, b in qr.values())
+            q_lo, q_hi = PAPER["fig14_q"]
+            smaller = lo > q_lo and hi < q_hi
             t.append(f"Q_out swings between {lo:.0f} and +{hi:.0f} mm^3/s against the "
-                     f"paper's about -30 and +50 ({100 * lo / -30:.0f} % and "
-                     f"{100 * hi / 50:.0f} % of them): the same shape, smaller, as the film "
-                     "that carries the flow is thinner (Fig. 8). ")
+                     f"paper's about {q_lo:g} and +{q_hi:g} ({100 * lo / q_lo:.0f} % and "
+                     f"{100 * hi / q_hi:.0f} % of them)"
+                     + word(smaller, ": the same shape, smaller, as the film that carries the "
+                                     "flow is thinner (Fig. 8). ", ". "))
         o, i = ih["outstroke"], ih["instroke"]
-        t.append(f"The IHL estimate carries about as much each way as EHL, but its net "
+        he_out = f" against {tr['he'][0]:.1f} mm^3 in EHL (he)" if "he" in tr else ""
+        t.append(f"The IHL estimate carries {out_ihl:.1f} mm^3 out{he_out}, but its net "
                  f"({net_ihl:.1f} mm^3) is the difference of two films read off the steepest "
                  f"nodal gradients at the two edges of the dry contact (here h*_out = "
                  f"{um(o['h_star'])} from w = {o['w']:.2f} MPa/mm at the sealed side, h*_in = "
                  f"{um(i['h_star'])} from w = {i['w']:.2f} MPa/mm at the atmosphere side, at "
-                 "500 mm/s); each w grows as the mesh resolves the contact edge (Fig. 12), at "
-                 "its own rate, so the IHL net leakage, even its sign, is not mesh-resolved"
+                 f"{ih['speed']:g} mm/s); each w grows as the mesh resolves the contact edge "
+                 "(Fig. 12), at its own rate, so the IHL net leakage, even its sign, is not "
+                 "mesh-resolved"
                  + (f" ({self.across('fig14', 'ihl', nd=1, unit='mm^3')})."
                     if self.across('fig14', 'ihl') else "."))
         return "".join(t)
@@ -1311,8 +1312,8 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
     def write(self, commit, total_wall, argv, others=()):
         s1 = self.prepare()
         try:
-            s0 = summary(self.out, "state_0mpa")
-        except Missing:
+            s0 = output(self.out, "state_0mpa").summary
+        except MissingOutput:
             s0 = None
         self.read_others([o for o in others if o != self.out])
         self.sections()
@@ -1324,9 +1325,13 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
             info = json.loads((d / "done.json").read_text()) if (d / "done.json").exists() else {}
             if info:
                 commits.add(info.get("commit", "not recorded"))
-            sm = json.loads((d / "summary.json").read_text()) if (d / "summary.json").exists() else {}
+            try:
+                sm = output(self.out, r.key).summary
+            except MissingOutput:
+                sm = {}
             st = sm.get("stroke", {})
-            rows.append([f"`{r.key}`", f"`configs/{r.scene}.toml`" + (" (500 mm/s)" if r.edits else ""),
+            edits = ", ".join(f"{sec}.{key} = {v:g}" for (sec, key), v in r.edits.items())
+            rows.append([f"`{r.key}`", f"`configs/{r.scene}.toml`" + (f" ({edits})" if edits else ""),
                          r.what, f"{info['wall_s']:.1f}" if info else "-",
                          "ok" if info.get("returncode") == 0 else ("failed" if info else "not run"),
                          st.get("unknowns", sm.get("unknowns", "-")),
@@ -1335,6 +1340,13 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
         mesh = (f"{self.mesh[0]} mm along the rod side, {self.mesh[1]} mm in the bulk "
                 f"({self.mesh_name}); {sm.get('nodes', '?')} nodes, "
                 f"{sm.get('elements', '?')} quadrilaterals")
+
+        sc = self.scene("fig8_out")
+        paper_mesh, paper_net = CYCLE_STUDY[-1][0], CYCLE_STUDY[-1][1]
+        fine = [r[1] for r in CYCLE_STUDY[:-1] if r[0][0] <= MESHES["default"][0]]
+        spread = max(abs(x / paper_net - 1) for x in fine)
+        low = 1 - CYCLE_STUDY[0][1] / paper_net
+        p_in = self.scene("state_1mpa").fluid.p_in
 
         def state(s, what):
             if not s:
@@ -1349,18 +1361,20 @@ Generated by `scripts/paper_report.py` on {datetime.date.today().isoformat()}
 {platform.machine()}. Runs: `runs/<key>/` beside this file (each with the scene copy it ran
 and its log).
 
-- **Mesh:** {mesh}. The paper used 0.01 mm along the contact and 0.05 mm in the bulk.
-- **Paper values** are those the paper states in its text (Section 3) and figures, as
-  collected in MODEL.md "Reported behaviour"; sealts' numbers are measured from the runs.
-- **Steps 1-2** (mount; pressurise to 1 MPa with pressure penetration; long-term,
-  frictionless) ran once per sealed pressure ({state(s1, "`paper_state_1mpa`, 1 MPa")};
+- **Mesh:** {mesh}. The paper used {paper_mesh[0]:g} mm along the contact and
+  {paper_mesh[1]:g} mm in the bulk.
+- **Paper values** are those the paper states in its text (Section 3) and figures
+  (`PAPER` in `scripts/paper_report.py`); sealts' numbers are measured from the runs.
+- **Steps 1-2** (mount; pressurise to {p_in:g} MPa with pressure penetration; long-term,
+  frictionless) ran once per sealed pressure ({state(s1, f"`paper_state_1mpa`, {p_in:g} MPa")};
   {state(s0, "`paper_state_0mpa`, 0 MPa")}); every stroke restarts from their `state.h5`.
-- **Friction is on in every stroke** (rod mu_s = 0.1, Eq. 46-48; groove walls 0.1): without
-  solid friction the fluid shear rolls the O-ring in its groove, a different problem.
+- **Friction is on in every stroke** (rod mu_s = {sc.asperity.mu_s:g}, Eq. 46-48; groove
+  walls {sc.groove.mu:g}): without solid friction the fluid shear rolls the O-ring in its
+  groove, a different problem.
 - **Mesh convergence of the leakage** (README, tests/test_cycle_regression.py): for the
-  hyperelastic cycle 11.05 / 12.40 / 15.88 / 15.49 mm^3 net on the 0.1 / 0.05 / 0.025 /
-  0.0125 mm contact meshes, 15.87 on the paper's 0.01 / 0.05 mm mesh: converged to about
-  3 % from 0.025 / 0.2 mm (the default) on; the coarse mesh's leakages are 30 % low.
+  hyperelastic cycle net leakage {study(1)}: within {100 * spread:.1f} % of the paper's
+  mesh from {MESHES["default"][0]:g} / {MESHES["default"][1]:g} mm (the default) on; the
+  coarse mesh's leakage is {100 * low:.0f} % low.
 - **Material:** the steady comparisons (Figs. 8, 11, 12) use the long-term (hyperelastic)
   material, as the paper does for its long-term and IHL cases; Fig. 9 and three of the four
   Fig. 14 cycles use Table 2's Prony series from a relaxed start.
@@ -1373,28 +1387,30 @@ Total wall time {total_wall / 60:.1f} min (sum of the runs below; one run at a t
 {table(["run", "scene", "what", "wall [s]", "status", "unknowns", "stroke steps / rejected"], rows)}
 
 """
-        closing = """
+        closing = f"""
 ## What is left
 
-- Mesh convergence of the film and the leakage: every comparison on the paper's 0.01 mm
-  contact mesh (`--mesh 0.01 0.05`; steps 1-2 alone take 10-20 min there, each
-  viscoelastic cycle much longer). The net leakage is still rising with refinement.
+- Every comparison on the paper's {paper_mesh[0]:g} mm contact mesh
+  (`--mesh {paper_mesh[0]:g} {paper_mesh[1]:g}`; steps 1-2 alone take 10-20 min there, each
+  viscoelastic cycle much longer): the cycle's net leakage is converged from the
+  {MESHES["default"][0]:g} mm contact mesh on (README), the films of Figs. 8-12 are not
+  checked there.
 - `sealts ihl` takes w as the largest nodal gradient of the dry pressure. For this O-ring
   that is the contact edge, where the dry pressure rises almost like a square root and is
-  carried by the asperity law at gaps (about 0.55-1 um) as large as the film itself, so
+  carried by the asperity law at gaps as large as the film itself (Fig. 12), so
   IHL's premise (fluid pressure = dry pressure) fails just where it reads w; the gradient
   grows with refinement, and h* and above all the IHL net leakage (a difference of two such
   films) depend on the mesh. Where to read w (past the edge, on a fitted flank) is a
   modelling decision for `sealts ihl`.
-- The node-to-node ripple of h in full film on the coarser meshes (Fig. 12; gone on the
-  0.01 mm mesh): a check of the control-volume film's element flux against an alternating
-  h, which it does not see to first order.
+- The node-to-node ripple of h in full film (Fig. 12): a check of the control-volume
+  film's element flux against an alternating h, which it does not see to first order.
 - The paper's own flow factors for the turned rod (a `[film] flow_factors = "table"` CSV,
   once digitised) and the transverse Patir-Cheng rows (gamma < 1).
-- Why the paper's viscoelastic film gain is 0.15 um: a viscoelastic start that is not
-  relaxed would test the explanation given under Fig. 9.
-- Why the paper's fluid pressure peaks at 3-3.5 MPa, above this O-ring's whole dry contact
-  pressure (Fig. 8): the paper gives no dry contact pressure to compare.
+- Why the paper's viscoelastic film gain is {um(PAPER["fig9_excess"], 2)}: a viscoelastic
+  start that is not relaxed would test the explanation given under Fig. 9.
+- Why the paper's fluid pressure peaks at {PAPER["fig8_p_max"][0]:g}-{PAPER["fig8_p_max"][1]:g} MPa,
+  {word(self.dry_peak < PAPER["fig8_p_max"][0], "above", "near")} this O-ring's whole dry
+  contact pressure (Fig. 8): the paper gives no dry contact pressure to compare.
 - The pressure-penetration front is not updated during the stroke (sealts' stroke keeps
   step 2's wetted surface).
 """
