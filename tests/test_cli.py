@@ -1,6 +1,4 @@
 """sealts run: output contract, PETSc options from the command line and from the scene."""
-import csv
-import json
 import subprocess
 import sys
 
@@ -9,6 +7,7 @@ import pytest
 
 from closed_forms import slider_pressure
 from conftest import CONFIGS, ROOT
+from sealts.io.results import Results, read_series
 
 
 def sealts(*args):
@@ -20,7 +19,7 @@ def test_slider_run_writes_the_output_contract(tmp_path):
     out = tmp_path / "out"
     r = sealts("run", str(CONFIGS / "slider.toml"), "-o", str(out))
     assert r.returncode == 0, r.stderr
-    summary = json.loads((out / "summary.json").read_text())
+    summary = Results(out).summary
     res = summary["results_t0"]
     assert summary["scene"] == "slider"
     for key in ("wall_time_s", "steps_accepted", "steps_rejected", "newton_iterations",
@@ -36,18 +35,16 @@ def test_slider_run_writes_the_output_contract(tmp_path):
     p_end, _ = slider_pressure(y, 10.0, 0.0025, 0.002, 100.0, 1e-8, -0.001)
     assert end["t"] == pytest.approx(0.5)
     assert end["p_max"] == pytest.approx(p_end.max(), rel=1e-4)
-    with open(out / "profiles.csv") as f:
-        rows = list(csv.DictReader(f))
-    assert list(rows[0]) == ["t", "y", "h", "p", "tau"]
-    assert sorted({float(r["t"]) for r in rows}) == [0.0, 0.25, 0.5]
-    assert len(rows) == 3 * 1001
-    series = list(csv.DictReader(open(out / "series.csv")))
-    assert len(series) == summary["steps_accepted"] + 1  # plus the initial state
-    import h5py
-    with h5py.File(out / "series.h5") as f:              # the same series in HDF5
-        assert f.attrs["columns"].split(",") == list(series[0])
-        for k in series[0]:
-            assert np.allclose(f[k][:], [float(r[k]) for r in series], rtol=1e-9)
+    profiles = Results(out).profiles()
+    assert list(profiles) == [0.0, 0.25, 0.5]
+    for p in profiles.values():
+        assert list(p) == ["y", "h", "p", "tau"] and p["y"].size == 1001
+    series = Results(out).series
+    assert len(series["t"]) == summary["steps_accepted"] + 1  # plus the initial state
+    h5 = read_series(out / "series.h5")                  # the same series in HDF5
+    assert list(h5) == list(series)
+    for k in series:
+        assert np.allclose(h5[k], series[k], rtol=1e-9)
     for name in ("profiles.png", "series.png"):
         assert (out / name).stat().st_size > 10_000
 
@@ -59,10 +56,9 @@ def test_command_line_petsc_options_reach_the_solvers(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "SNES Function norm" in r.stdout
     assert "type: beuler" in r.stdout        # the command line beat the scene's bdf
-    summary = json.loads((tmp_path / "summary.json").read_text())
-    assert summary["steps_accepted"] == 8    # 1 s at the fixed dt of 0.125 s
-    rows = list(csv.DictReader(open(tmp_path / "series.csv")))
-    assert float(rows[-1]["t"]) == pytest.approx(1.0)
+    out = Results(tmp_path)
+    assert out.summary["steps_accepted"] == 8    # 1 s at the fixed dt of 0.125 s
+    assert out.series["t"][-1] == pytest.approx(1.0)
 
 
 def test_scene_petsc_table_is_used_when_command_line_is_silent(tmp_path):

@@ -42,8 +42,6 @@ roundoff may change a rejection and with it the sequence. Hence 0.5 mm^3 on the 
 0.6 % on the transports, 0.3 % on the peak friction. Any change of the model or the
 discretisation that moves the result by the mesh errors above (3 to 5 mm^3) fails it.
 """
-import csv
-import json
 import subprocess
 import sys
 
@@ -51,6 +49,7 @@ import numpy as np
 import pytest
 
 from conftest import CONFIGS, ROOT
+from sealts.io.results import Results
 
 
 @pytest.fixture(scope="module")
@@ -59,11 +58,8 @@ def cycle(tmp_path_factory):
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(CONFIGS / "oring_stroke.toml"),
                         "-o", str(out)], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr[-2000:]
-    summary = json.loads((out / "summary.json").read_text())
-    with open(out / "series.csv") as f:
-        rows = list(csv.DictReader(f))
-    series = {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
-    return summary, series, out
+    res = Results(out)
+    return res.summary, res.series, out
 
 
 def test_cycle_leakage_and_peak_friction(cycle):

@@ -1,7 +1,5 @@
 """The viscoelastic hold of a seal (step 3): relaxed start, exact Schur solve, creep to the
 long-term state."""
-import csv
-import json
 import subprocess
 import sys
 
@@ -9,6 +7,7 @@ import numpy as np
 import pytest
 
 from conftest import config_text, mount_and_pressurise, scene
+from sealts.io.results import Results
 from sealts.problem.hold_run import HoldStep
 
 # a coarse O-ring and two Prony terms (both active over [1e-3 s, 1e3 s]) keep this quick
@@ -57,7 +56,7 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
                        capture_output=True, text=True, cwd=tmp_path, timeout=900)
     assert r.returncode == 0, r.stderr
     assert "Prony terms: 2 active" in r.stdout
-    hold = json.loads((out / "summary.json").read_text())["hold"]
+    hold = Results(out).summary["hold"]
     check = hold["long_term_check"]
     # out of balance by < 1e-4 of the 2,886 N rod force (the TS rtol; measured 1.8e-6 N)
     assert check["long_term_residual_max_N"] < 0.29
@@ -65,10 +64,8 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
     assert check["max_displacement_difference_mm"] < 1e-6
     assert hold["linear_iterations"] == hold["newton_iterations"]
     assert hold["steps_accepted"] > 0 and "steps_rejected" in hold
-    rows = list(csv.DictReader(open(out / "series.csv")))
-    t = np.array([float(x["t"]) for x in rows])
-    force = np.array([float(x["rod_force"]) for x in rows])
-    dt = np.array([float(x["dt"]) for x in rows])
+    series = Results(out).series
+    t, force, dt = series["t"], series["rod_force"], series["dt"]
     after = np.argmin(np.abs(t - 1e-2))
     assert abs(force[after] - force[-1]) > 1e-3 * abs(force[-1])   # it creeps after the step
     assert dt.max() > 1e3 * dt.min()

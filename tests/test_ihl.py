@@ -67,12 +67,11 @@ def test_cli_ihl_on_the_pressurised_oring(tmp_path):
     from the written traction profile (recomputed here from the CSV). Pressure enters on
     the pressurised side: the profile starts at p_in and ends at 0, and the outstroke's
     inlet lies on the pressure side (y below the peak). Without rod.velocity: one line, exit 2."""
-    import csv
-    import json
     import subprocess
     import sys
 
     from conftest import config_text
+    from sealts.io.results import Results
     text = config_text("oring_pressurise",
                        mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)})
     still = tmp_path / "still.toml"
@@ -87,10 +86,9 @@ def test_cli_ihl_on_the_pressurised_oring(tmp_path):
     r = subprocess.run([sys.executable, "-m", "sealts", "ihl", str(cfg), "-o", str(out)],
                        capture_output=True, text=True, timeout=600)
     assert r.returncode == 0, r.stderr
-    est = json.loads((out / "summary.json").read_text())["ihl"]
-    rows = list(csv.DictReader(open(out / "ihl_profile.csv")))
-    y = np.array([float(x["y"]) for x in rows])
-    p = np.array([float(x["p"]) for x in rows])
+    est = Results(out).summary["ihl"]
+    prof = Results(out).profiles("ihl_profile")[0.0]
+    y, p = prof["y"], prof["p"]
     assert p[0] == pytest.approx(1.0) and p[-1] == 0.0
     g = np.gradient(p, y)
     for key, sign in (("outstroke", 1.0), ("instroke", -1.0)):

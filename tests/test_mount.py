@@ -1,14 +1,13 @@
 """Mounting the seal in its groove: contact Jacobians, mesh convergence, force balance."""
-import json
 import subprocess
 import sys
 
-import h5py
 import numpy as np
 import pytest
 
 from conftest import ROOT, config_text, scene
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
+from sealts.io.results import Results
 from sealts.mesh.seal_mesh import ORing, build_mesh
 from sealts.problem import Problem
 from sealts.problem.seal_run import model_from_scene
@@ -361,15 +360,15 @@ def test_cli_mount_writes_fields_profile_and_summary(tmp_path):
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(cfg), "-o", str(out)],
                        capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0, r.stderr
-    s = json.loads((out / "summary.json").read_text())
+    res = Results(out)
+    s = res.summary
     for key in ("contact_force_total", "contact_force_per_length", "contact_width",
                 "p_contact_max", "groove_reactions"):
         assert key in s["results"]
     assert s["results"]["contact_force_per_length"] == pytest.approx(
         s["results"]["contact_force_total"] / (2 * np.pi * 25.0))
-    header = (out / "profiles.csv").read_text().splitlines()[0]
-    assert header == "t,y,h,p_contact"
-    with h5py.File(out / "fields.h5") as f:
-        assert len(f.keys()) > 0
-    assert "von_mises" in (out / "fields.xdmf").read_text()
+    assert [list(p) for p in res.profiles().values()] == [["y", "h", "p_contact"]]
+    fields = res.fields()
+    assert fields.point_data["displacement"].shape == (1, s["nodes"], 3)
+    assert fields.cell_data["von_mises"].shape == (1, s["elements"])
     assert (out / "profiles.png").stat().st_size > 10_000

@@ -1,6 +1,4 @@
 """MPI: mpi4py and PETSc share one MPI library; two ranks reproduce the serial answer."""
-import csv
-import json
 import os
 import shutil
 import subprocess
@@ -10,6 +8,7 @@ import numpy as np
 import pytest
 
 from conftest import CONFIGS, ROOT, config_text
+from sealts.io.results import Results
 
 MPIEXEC = shutil.which("mpiexec")
 
@@ -33,8 +32,8 @@ def _run(n, scene, out, *opts):
         cmd = [MPIEXEC, "-n", str(n)] + cmd
     r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=600)
     assert r.returncode == 0, r.stderr
-    p = np.array([float(row["p"]) for row in csv.DictReader(open(out / "profiles.csv"))])
-    return json.loads((out / "summary.json").read_text()), p
+    res = Results(out)
+    return res.summary, np.concatenate([p["p"] for p in res.profiles().values()])
 
 
 @pytest.mark.mpi
@@ -59,7 +58,7 @@ def _summary(n, cfg, out, timeout=600):
         cmd = [MPIEXEC, "-n", str(n)] + cmd
     r = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
     assert r.returncode == 0, r.stderr
-    return json.loads((out / "summary.json").read_text())
+    return Results(out).summary
 
 
 @pytest.mark.mpi
