@@ -18,7 +18,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
 from closed_forms import slider_pressure  # noqa: E402
-from sealts.problem.film_run import solve_steady_film  # noqa: E402
+from sealts.problem.film_model import solve_steady_film  # noqa: E402
 from sealts.scene import load_scene  # noqa: E402
 from dataclasses import replace as _replace  # noqa: E402
 

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
 from sealts.solid.prony import (TABLE2_G, TABLE2_TAU, Classification, PronySeries,  # noqa: E402
                                 classify)
@@ -64,16 +64,17 @@ def bench_oring(tols, t_end):
 
     import tomllib
 
-    from sealts.problem.hold_run import HoldStep
-    from sealts.problem.seal_run import model_from_scene
+    from sealts.io.observers import Recorder
+
+    from sealts.problem.hold_problem import HoldProblem
     from sealts.scene.schema import scene_from_table
+    from sealts.steps import prepare
     table = tomllib.loads((ROOT / "configs" / "oring_hold.toml").read_text())
     table["mesh"].update(h_contact=0.1, h_bulk=0.4)
     table["hold"].update(t_end=t_end, p_end=3.0)
+    table.setdefault("output", {})["progress"] = False
     s = scene_from_table(table, base=ROOT / "configs")
-    model = model_from_scene(s)
-    u = model.mount(t_hold=2.0, dt0=0.02)
-    u = model.pressurise(u, 1.0, t0=2.0, t_hold=4.0, dt0=0.02)
+    state = prepare(s)                     # steps 1-2: mounted, pressurised to 1 MPa
     times = np.logspace(-3, np.log10(t_end), 13)
     print(f"\n2. O-ring hold 1 -> 3 MPa over 1 ms, to {t_end:g} s, Table 2, coarse mesh")
     print(f"{'tol':>8} {'active':>6} {'unknowns':>8} {'steps':>6} {'wall [s]':>8} "
@@ -81,15 +82,13 @@ def bench_oring(tols, t_end):
     ref, rows = None, []
     for tol in [0.0] + list(tols):
         ve = replace(s.viscoelastic, tol=tol) if tol else replace(s.viscoelastic, tol=1e-300)
-        step = HoldStep(model, u, 1.0, 3.0, 1e-3, ve, t_end)
-        forces = {}
-
-        def on_stop(t, U, step=step, forces=forces):
-            forces[t] = float(step.rod.forces(t, U[step.layout.udofs].ravel()).sum())
-
+        step = HoldProblem(state.model, state.u, state.load, 1.0, 3.0, 1e-3, ve, t_end)
+        rec = Recorder()
         t0 = time.perf_counter()
-        step.run(t_end, 1e-5, 1e-4, stops=times[:-1], on_stop=on_stop)
+        step.run(t_end, 1e-5, 1e-4, stops=times[:-1], observers=[rec])
         wall = time.perf_counter() - t0
+        forces = {t: float(step.rod.forces(t, step.displacement(U)).sum())
+                  for t, U in rec.stops}
         f = np.array([forces[min(forces, key=lambda x: abs(x - t))] for t in times])
         if ref is None:
             ref = f

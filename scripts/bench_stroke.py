@@ -30,20 +30,21 @@ def scene(h_contact, h_bulk, viscoelastic):
                                       "cache": str(ROOT / "meshes")}, **extra)
 
 
-def stroke(model, u, s, rtol):
-    from sealts.problem.stroke_run import StrokeStep
+def stroke(state, s, rtol):
+    from sealts.io.observers import Recorder
+
+    from sealts.problem.stroke_problem import StrokeProblem
     s = replace(s, stroke=replace(s.stroke, rtol=rtol))
     t0 = time.perf_counter()
-    step = StrokeStep(model, u, s)
+    step = StrokeProblem(state.model, state.u, s, state.load)
     U = step.start()
     rows = []
 
-    def on_step(ts, k, t, Ut):
-        step.accepted(t, Ut)
+    def on_step(t, Ut):
         rows.append((t, step.motion.v(t), step.scalars(t, Ut)["friction_fluid"],
                      Ut[step.vdofs[1]]))
 
-    U = step.run(U, s.stroke.t_end, s.stroke.dt, rtol, on_step=on_step)
+    U = step.run(U, s.stroke.t_end, s.stroke.dt, rtol, observers=[Recorder(on_step)])
     wall = time.perf_counter() - t0
     t, v, F, V = map(np.array, zip(*rows))
     out = float(np.sum(np.diff(V)[(v[1:] + v[:-1]) > 0]))
@@ -64,8 +65,8 @@ def main():
     results = {}
     for h in meshes:
         s = scene(*h, a.viscoelastic)
-        model, u = mount_and_pressurise(s)
-        results[h] = [stroke(model, u, s, r) for r in tols]
+        state = mount_and_pressurise(s)
+        results[h] = [stroke(state, s, r) for r in tols]
         r = results[h][-1]
         print(f"  {h[0]}/{h[1]} mm done: net leakage {r['leak']:.4g} mm^3 at rtol {r['rtol']:.0e}",
               flush=True)

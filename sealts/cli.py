@@ -80,21 +80,20 @@ def run(args, command="run"):
     _prepare_outdir(out)
     PETSc = _init_petsc(petsc_args, scene)
     comm = PETSc.COMM_WORLD
+    if command == "ihl" and scene.model != "seal":
+        raise SceneError("ihl needs a seal scene (model = \"seal\")")
+    if command == "ihl" and scene.rod.velocity == 0.0:
+        raise SceneError("ihl needs the stroke speed: set rod.velocity (mm/s)")
+    options = PETSc.Options().getAll()
     from .io import Writer
+    from .steps import run_scene
     writer = Writer(out, comm, plots=scene.output.plot)
     try:
-        if command == "ihl":
-            from .problem.ihl_run import run_ihl
-            run_ihl(scene, writer, comm)
-            return 0
-        if scene.model == "seal":
-            from .problem.seal_run import run_seal
-            summary = run_seal(scene, writer, comm)
-        else:
-            from .problem.film_run import run_film
-            summary = run_film(scene, writer, comm)
+        summary = run_scene(scene, writer, comm, command, options)
     finally:
         writer.close()
+    if command == "ihl":
+        return 0
     if comm.getRank() == 0 and scene.output.progress and "stroke" in summary:
         st = summary["stroke"]
         leak = (f"leakage {st['leakage_out']:.4g} mm^3 out at the atmosphere side (outstroke "
@@ -147,7 +146,7 @@ def main(argv=None):
         print(f"scene error: {e}", file=sys.stderr)
         return 2
     except Exception as e:  # solver failures are reported, not dumped
-        from .problem import SolveError
+        from .core import SolveError
         if isinstance(e, SolveError):
             print(f"solve error: {e}", file=sys.stderr)
             return 3

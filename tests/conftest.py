@@ -5,6 +5,8 @@ from pathlib import Path
 
 import pytest
 
+from sealts.io.observers import Recorder  # noqa: F401  (tests import it from here)
+
 ROOT = Path(__file__).resolve().parents[1]
 CONFIGS = ROOT / "configs"
 sys.path.insert(0, str(Path(__file__).parent))
@@ -94,13 +96,17 @@ def central_differences(problem, t, u, ud, blocks, eps, n):
 
 
 def mount_and_pressurise(s):
-    """Steps 1-2 of a seal scene: mounted, then pressurised to fluid.p_in. (model, u)."""
-    from sealts.problem.seal_run import model_from_scene
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
-                         dt0=s.mount.dt, p_crit=s.fluid.p_crit)
-    return model, u
+    """Steps 1-2 of a seal scene through the procedure (sealts.steps.prepare): the RunState
+    with the model, u, t and the pressure front ``load``."""
+    from sealts.steps import prepare
+    return prepare(s)
+
+
+def stroke_of(state, s=None):
+    """The stroke's DAE (StrokeProblem) of scene s (default the state's) on a state of
+    steps 1-2."""
+    from sealts.problem.stroke_problem import StrokeProblem
+    return StrokeProblem(state.model, state.u, s or state.scene, state.load)
 
 
 def coarse_stroke(cache, **stroke):

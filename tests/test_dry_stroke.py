@@ -2,8 +2,7 @@
 import numpy as np
 import pytest
 
-from conftest import coarse_stroke, mount_and_pressurise
-from sealts.problem.stroke_run import StrokeStep
+from conftest import coarse_stroke, mount_and_pressurise, stroke_of
 
 
 def test_dry_stroke_slides_at_the_coulomb_limit_with_no_film_unknowns(tmp_path):
@@ -14,20 +13,17 @@ def test_dry_stroke_slides_at_the_coulomb_limit_with_no_film_unknowns(tmp_path):
     the whole normal load, and the rod side keeps step 2's pressure penetration (the load
     at the start equals the pressurised rod force)."""
     s = coarse_stroke(tmp_path, t_end=0.05, film=False)
-    model, u = mount_and_pressurise(s)
-    rod_force = model.results(2 * s.mount.t_hold, u)["contact_force_total"]
-    step = StrokeStep(model, u, s)
+    state = mount_and_pressurise(s)
+    model = state.model
+    rod_force = state.results["contact_force_total"]
+    step = stroke_of(state)
     assert step.film is None and step.leakage is None
     assert step.n == 2 * model.mesh.X.shape[0]
     U0 = step.start()
     start = step.scalars(0.0, U0)
     assert start["load_fluid"] == 0.0 and start["Q_out"] == 0.0
     assert start["load_asperity"] == pytest.approx(rod_force, rel=1e-3)
-
-    def on_step(ts, k, t, Ut):
-        step.accepted(t, Ut)
-
-    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, on_step=on_step)
+    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol)
     end = step.scalars(s.stroke.t_end, U)
     assert end["friction_solid"] == pytest.approx(s.asperity.mu_s * end["load_asperity"],
                                                   rel=1e-6)

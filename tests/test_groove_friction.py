@@ -195,24 +195,17 @@ def stroke_with_friction(tmp_path_factory):
     """The coarse O-ring at 1 MPa (as the fixture of tests/test_stroke.py) with friction on
     the rod and the groove walls: the rod ramps to 100 mm/s outstroke in 10 ms and holds to
     30 ms (2.5 mm of travel)."""
-    from conftest import coarse_stroke, mount_and_pressurise
-    from sealts.problem.stroke_run import StrokeStep
+    from conftest import Recorder, coarse_stroke, mount_and_pressurise, stroke_of
 
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = coarse_stroke(cache, friction=True)
     assert s.groove.mu == 0.1 and s.asperity.mu_s == 0.1
-    model, u = mount_and_pressurise(s)
-    step = StrokeStep(model, u, s)
+    step = stroke_of(mount_and_pressurise(s))
     assert step.friction is not None and step.groove_friction is not None
     U0 = step.start()
-    states = []
-
-    def on_step(ts, k, t, Ut):
-        step.accepted(t, Ut)
-        states.append((t, Ut.copy()))
-
-    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, on_step=on_step)
-    return s, step, U0, U, states
+    rec = Recorder()
+    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, observers=[rec])
+    return s, step, U0, U, rec.states
 
 
 def test_stroke_slides_the_seal_on_the_rod(stroke_with_friction):

@@ -8,7 +8,7 @@ import pytest
 
 from conftest import config_text, mount_and_pressurise, scene
 from sealts.io.results import Results
-from sealts.problem.hold_run import HoldStep
+from sealts.problem.hold_problem import HoldProblem
 
 # a coarse O-ring and two Prony terms (both active over [1e-3 s, 1e3 s]) keep this quick
 SMALL = dict(mesh={"h_contact": 0.1, "h_bulk": 0.4},
@@ -21,16 +21,16 @@ SMALL = dict(mesh={"h_contact": 0.1, "h_bulk": 0.4},
 def pressurised(tmp_path_factory):
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = scene("oring_hold", **{**SMALL, "mesh": {**SMALL["mesh"], "cache": cache}})
-    model, u = mount_and_pressurise(s)
-    return s, model, u
+    return s, mount_and_pressurise(s)
 
 
 def test_relaxed_start_has_no_stress_jump(pressurised):
     """With H_i = S_iso(u0) the hold's residual at its start is the long-term equilibrium's
     (below the static solve's tolerance); a virgin start (H = 0) would be out of balance by
     the whole viscous stress."""
-    s, model, u = pressurised
-    step = HoldStep(model, u, 1.0, 1.0, 1e-3, s.viscoelastic, 1000.0)
+    s, state = pressurised
+    model = state.model
+    step = HoldProblem(model, state.u, state.load, 1.0, 1.0, 1e-3, s.viscoelastic, 1000.0)
     f = step.problem.residual(0.0, step.U0, np.zeros_like(step.U0))
     tol = 10 * 1e-9 * model.force_scale
     assert np.abs(f[step.layout.udofs]).max() < tol
@@ -75,7 +75,7 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
 def test_temperature_history_gives_the_wlf_factor_in_time():
     """The cooling scene: A = 1 at 25 C until 60 s, then theta falls linearly to 0 C at
     3660 s, where A = 10^(7.69 * 25 / 132.74) (Eq. 12); halfway it is A(12.5 C)."""
-    from sealts.problem.hold_run import prony_series
+    from sealts.solid.viscoelastic_solid import prony_series
     s = scene("oring_hold_cooling")
     _, shift = prony_series(s.viscoelastic)
     assert shift(0.0) == shift(60.0) == 1.0

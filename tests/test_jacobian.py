@@ -12,7 +12,7 @@ from conftest import scene
 from sealts.film.flow_factors import FlowFactors
 from sealts.film.reynolds_fv import element_fluxes, storage
 from sealts.problem import Problem
-from sealts.problem.film_run import FilmModel
+from sealts.problem.film_model import FilmModel
 
 FD_REL = 1e-6
 

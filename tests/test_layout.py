@@ -6,7 +6,7 @@ from conftest import scene
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
 from sealts.mesh.layout import Layout, vertex_dofs
 from sealts.problem import Problem
-from sealts.problem.seal_run import model_from_scene
+from sealts.problem.seal_model import model_from_scene
 from sealts.solid.term import SolidTerm
 
 

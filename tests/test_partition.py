@@ -11,7 +11,7 @@ import pytest
 from conftest import ROOT, scene
 from sealts.mesh.layout import Layout
 from sealts.mesh.partition import Partition
-from sealts.problem.seal_run import model_from_scene
+from sealts.problem.seal_model import model_from_scene
 
 MPIEXEC = shutil.which("mpiexec")
 

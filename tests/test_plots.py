@@ -74,8 +74,14 @@ def test_film_profiles_without_asperity(tmp_path):
 
 
 def test_mount_profiles_name_the_load_steps(tmp_path):
-    fig = plot_profiles([(2.0, contact_profile(2.0)), (4.0, contact_profile(4.0))],
-                        tmp_path / "profiles.png")
+    """The steps name their profiles (Writer.profile's label); without names the
+    pseudo-times label them."""
+    pair = [(2.0, contact_profile(2.0)), (4.0, contact_profile(4.0))]
+    (tmp_path / "named").mkdir()
+    fig = plot_profiles(pair, tmp_path / "profiles.png")
+    assert legend_texts(fig) == ["pseudo-time 2", "pseudo-time 4"]
+    fig = plot_profiles(pair, tmp_path / "named" / "profiles.png",
+                        time_labels=["mounted, pseudo-time 2", "pressurised, pseudo-time 4"])
     assert_readable(fig)
     legend = legend_texts(fig)
     assert any("mounted" in s and "2" in s for s in legend)

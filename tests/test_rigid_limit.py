@@ -24,13 +24,14 @@ pressure, which does not scale, deforms the seal by an amount proportional to 1/
 import numpy as np
 import pytest
 
-from conftest import scene
+from conftest import Recorder, scene
 from sealts.film.flow_factors import FlowFactors
 from sealts.film.reynolds_fv import ControlVolumeScheme
 from sealts.film.term import FilmTerm
 from sealts.problem import Problem
-from sealts.problem.seal_run import model_from_scene
-from sealts.problem.stroke_run import StrokeStep
+from sealts.problem.seal_model import model_from_scene
+from sealts.problem.stroke_problem import StrokeProblem
+from sealts.steps import prepare
 
 H0 = 3e-3                 # mm, the gap at the seal's lowest point
 V = 100.0                 # mm/s
@@ -61,7 +62,7 @@ class FrozenGap:
 
 def film_only(y, h, s, area):
     """The film-only solver of the film scenes (ControlVolumeScheme in a FilmTerm, steady
-    Newton, as sealts.problem.film_run.solve_steady_film) on the nodes y with the gap h:
+    Newton, as sealts.problem.film_model.solve_steady_film) on the nodes y with the gap h:
     (p, Q_in, Q_out)."""
     scheme = ControlVolumeScheme(y, s.fluid.viscosity, lambda t: V, s.fluid.p_in,
                                  s.fluid.p_out, FlowFactors.none(), s.film.h_floor)
@@ -92,23 +93,18 @@ def runs(tmp_path_factory):
     its end, with the film-only solution on the start's gap."""
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = stiff_scene(cache, 1.0, 24.0)
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
+    state = prepare(s)
+    model, u = state.model, state.u
     chain = model.mesh.chain("rod_side")
     r_rod = float((model.mesh.X[chain, 0] + u[model.udofs[chain, 0]]).min()) - H0
     out = {}
     for alpha in ALPHAS:
         sa = stiff_scene(cache, alpha, r_rod)
-        step = StrokeStep(model_from_scene(sa), u, sa)
+        step = StrokeProblem(model_from_scene(sa), u, sa)
         U0 = step.start()
-        last = []
-
-        def on_step(ts, k, t, U):
-            step.accepted(t, U)
-            last[:] = last[-1:] + [(t, U)]
-
-        U = step.run(U0, sa.stroke.t_end, sa.stroke.dt, sa.stroke.rtol, on_step=on_step)
-        (ta, Ua), (tb, Ub) = last
+        rec = Recorder()
+        U = step.run(U0, sa.stroke.t_end, sa.stroke.dt, sa.stroke.rtol, observers=[rec])
+        (ta, Ua), (tb, Ub) = rec.states[-2:]
         assert tb == sa.stroke.t_end
         y0, h0, _, _ = step.film.film(0.0, U0)
         area = 2.0 * np.pi * sa.rod.radius                  # Eq. 31, from the scene

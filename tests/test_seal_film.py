@@ -247,15 +247,16 @@ def test_pressurised_oring_with_film(tmp_path):
     from conftest import scene
     from sealts.contact.rigid import GrooveContact, RodContact
     from sealts.problem import Constraints
-    from sealts.problem.seal_run import model_from_scene, ramp
+    from sealts.problem.seal_model import ramp
+    from sealts.steps import prepare
     from sealts.solid.pressure import PressureLoad
     from sealts.solid.stabilisation import ViscousStabilisation
     from sealts.solid.term import SolidTerm
 
     s = scene("oring_mount", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)})
-    model = model_from_scene(s)
-    u_mounted = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    assert model.static
+    state = prepare(s)
+    model, u_mounted = state.model, state.u
+    assert state.udot is None
     mesh, X = model.mesh, model.mesh.X
     lay = Layout(mesh, film=True)
     chain, ud = lay.rod_nodes, lay.udofs

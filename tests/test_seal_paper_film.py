@@ -245,28 +245,23 @@ def strokes(tmp_path_factory):
     accepted states and the scalars at the end (U' the last step's difference quotient)."""
     from dataclasses import replace
 
-    from conftest import scene
-    from sealts.problem.seal_run import model_from_scene
-    from sealts.problem.stroke_run import StrokeStep
+    from conftest import Recorder, mount_and_pressurise, scene, stroke_of
 
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": cache},
               stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
                       "t_end": 0.02, "output_times": [], "friction": True})
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    u = model.pressurise(u, s.fluid.p_in, t0=s.mount.t_hold, t_hold=2 * s.mount.t_hold,
-                         dt0=s.mount.dt)
+    state = mount_and_pressurise(s)
     out = {}
     for scheme in ("fv", "paper"):
         sc = replace(s, film=replace(s.film, scheme=scheme))
-        step = StrokeStep(model, u, sc)
-        states = []
+        step = stroke_of(state, sc)
+        rec = Recorder()
         step.run(step.start(), sc.stroke.t_end, sc.stroke.dt, sc.stroke.rtol,
-                 on_step=lambda ts, k, t, Ut: states.append((t, Ut)))
-        (ta, Ua), (tb, Ub) = states[-2:]
-        out[scheme] = step, states, step.scalars(tb, Ub, (Ub - Ua) / (tb - ta))
-    out["setup"] = s, model, u
+                 observers=[rec])
+        (ta, Ua), (tb, Ub) = rec.states[-2:]
+        out[scheme] = step, rec.states, step.scalars(tb, Ub, (Ub - Ua) / (tb - ta))
+    out["setup"] = s, state
     return out
 
 
@@ -316,13 +311,13 @@ def test_stroke_schemes_agree(strokes):
     # the scene's scheme reached the stroke, and film.alpha with it
     from dataclasses import replace
 
-    from sealts.problem.stroke_run import StrokeStep
+    from conftest import stroke_of
     step = strokes["paper"][0]
     assert isinstance(step.film, SealPaperFilmTerm) and step.film.alpha == 0.5
     assert step.n == strokes["fv"][0].n + 2 and not isinstance(strokes["fv"][0].film,
                                                                  SealPaperFilmTerm)
-    s, model, u = strokes["setup"]
-    other = StrokeStep(model, u, replace(s, film=replace(s.film, scheme="paper", alpha=0.3)))
+    s, state = strokes["setup"]
+    other = stroke_of(state, replace(s, film=replace(s.film, scheme="paper", alpha=0.3)))
     assert other.film.alpha == 0.3
 
     def rel(key):

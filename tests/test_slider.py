@@ -8,7 +8,7 @@ import pytest
 
 from closed_forms import hydrostatic_pressure, slider_pressure
 from conftest import scene
-from sealts.problem.film_run import solve_steady_film
+from sealts.problem.film_model import solve_steady_film
 
 L, H1, SH, V, ETA, HD = 10.0, 0.003, 0.002, 100.0, 1e-8, -0.001
 

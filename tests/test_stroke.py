@@ -2,8 +2,7 @@
 import numpy as np
 import pytest
 
-from conftest import coarse_stroke, mount_and_pressurise
-from sealts.problem.stroke_run import StrokeStep
+from conftest import Recorder, coarse_stroke, mount_and_pressurise, stroke_of
 
 
 @pytest.fixture(scope="module")
@@ -12,13 +11,12 @@ def stroke(tmp_path_factory):
     to 30 ms; no solid friction (tests/test_groove_friction.py runs it with friction)."""
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = coarse_stroke(cache, friction=False)
-    model, u = mount_and_pressurise(s)
-    step = StrokeStep(model, u, s)
+    state = mount_and_pressurise(s)
+    step = stroke_of(state)
     U0 = step.start()
-    states = []
-    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol,
-                 on_step=lambda ts, k, t, Ut: states.append((t, Ut)))
-    return step, U0, U, states, (s, model, u)
+    rec = Recorder()
+    U = step.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, observers=[rec])
+    return step, U0, U, rec.states, (s, state)
 
 
 def control_volumes(step, U):
@@ -79,9 +77,10 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     stress (elastic part plus -F sum g_i H_i F^T / J) is the long-term one (1e-9 of the
     largest)."""
     from dataclasses import replace
-    step, U0, _, _, (s, model, u) = stroke
+    step, U0, _, _, (s, state) = stroke
+    model = state.model
     ve = replace(s.viscoelastic, prony="table2", t_min=1e-3)
-    vstep = StrokeStep(model, u, replace(s, viscoelastic=ve))
+    vstep = stroke_of(state, replace(s, viscoelastic=ve))
     assert len(vstep.viscoelastic.classes.active) > 0
     V0 = vstep.start()
     lay, vlay = step.layout, vstep.layout
@@ -90,7 +89,7 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     f = vstep.problem.residual(0.0, V0, np.zeros_like(V0))
     assert np.abs(f[vlay.prony_dofs]).max() < 1e-9 * model.force_scale
     assert np.abs(f[vlay.udofs]).max() < 10 * 1e-9 * model.force_scale
-    from sealts.problem.seal_run import element_stresses
+    from sealts.problem.seal_model import element_stresses
     long_term = element_stresses(model, vstep.displacement(V0))[0]
     relaxed = element_stresses(model, V0, vstep.solid, vstep.prony)[0]
     elastic_only = element_stresses(model, V0, vstep.solid)[0]

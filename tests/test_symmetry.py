@@ -21,10 +21,9 @@ Independent truth: the mirror map is built from the mesh coordinates alone
 import numpy as np
 import pytest
 
-from conftest import CONFIGS, scene
+from conftest import CONFIGS, Recorder, mount_and_pressurise, scene
 from sealts.mesh.seal_mesh import ORing, build_mesh, mirror_map
-from sealts.problem.seal_run import model_from_scene
-from sealts.problem.stroke_run import StrokeStep
+from sealts.problem.stroke_problem import StrokeProblem
 from sealts.scene import SceneError
 
 MESH = {"h_contact": 0.1, "h_bulk": 0.4, "symmetric": True}
@@ -45,14 +44,14 @@ def mounted(tmp_path_factory):
     """The mounted O-ring (p_in = 0: step 2 does nothing) and its mirror map j(i)."""
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = symmetric_scene(cache, 100.0)
-    model = model_from_scene(s)
-    u = model.mount(t_hold=s.mount.t_hold, dt0=s.mount.dt)
-    assert model.static and getattr(model, "load", None) is None
+    state = mount_and_pressurise(s)
+    model, u = state.model, state.u
+    assert state.udot is None and state.load is None and state.done == ["mount"]
     return cache, model, u, mirror_map(model.mesh.X, 0.0)
 
 
 class Mirror:
-    """The mirror as a signed permutation of a StrokeStep's unknowns: (M U)[dst] = sign U[src].
+    """The mirror as a signed permutation of a StrokeProblem's unknowns: (M U)[dst] = sign U[src].
     Node i -> its image j(i) with u_r kept and u_z negated; the film pressures in reversed
     chain order; (V_in, V_out) -> (-V_out, -V_in). Residual rows transform alike (forces
     like displacements, film balances like pressures, dV/dt - Q like V)."""
@@ -109,7 +108,7 @@ def test_static_state_is_its_own_mirror_image(mounted):
     is symmetric up to round-off amplified by the solves; bound 1e-10 of the largest
     displacement (measured 6e-15 mm against 0.71 mm) and 1e-12 MPa on p (all p are 0 here)."""
     cache, model, u, j = mounted
-    step = StrokeStep(model, u, symmetric_scene(cache, 100.0))
+    step = StrokeProblem(model, u, symmetric_scene(cache, 100.0))
     U0 = step.start()
     M = Mirror(step, j)
     scale = np.abs(U0[step.layout.udofs]).max()
@@ -120,24 +119,22 @@ def test_static_state_is_its_own_mirror_image(mounted):
 
 
 def run_stroke(model, u, s):
-    """The stroke of scene s from the mounted state: the StrokeStep, its start, the series
+    """The stroke of scene s from the mounted state: the StrokeProblem, its start, the series
     (every accepted step's scalars, with U' as the step's difference quotient, as
     ``sealts run`` writes them) and the states and profiles at the output times."""
-    step = StrokeStep(model, u, s)
+    step = StrokeProblem(model, u, s)
     U0 = step.start()
-    series, stops, last = [], {}, {}
+    series, last = [], {}
 
-    def on_step(ts, k, t, U):
-        step.accepted(t, U)
+    def on_step(t, U):
         Udot = (U - last["U"]) / (t - last["t"]) if last and t > last["t"] else None
         series.append((t, step.scalars(t, U, Udot)))
         last.update(t=t, U=U)
 
-    def on_stop(t, U):
-        stops[round(t, 12)] = (U, step.profile(t, U))
-
+    rec = Recorder(on_step)
     st = s.stroke
-    U = step.run(U0, st.t_end, st.dt, st.rtol, st.output_times, on_step, on_stop)
+    U = step.run(U0, st.t_end, st.dt, st.rtol, st.output_times, [rec])
+    stops = {round(t, 12): (Ut, step.profile(t, Ut)) for t, Ut in rec.stops}
     return step, U0, U, series, stops
 
 
@@ -234,7 +231,7 @@ def test_terms_are_mirror_equivariant(mounted):
     law 1e-3 stronger in -z, or side wall b's tangent tilted by 1e-3, breaks it by
     5e-5 and 2e-5 of the largest force."""
     cache, model, u, j = mounted
-    steps = {sign: StrokeStep(model, u, symmetric_scene(cache, sign * 100.0, friction=True))
+    steps = {sign: StrokeProblem(model, u, symmetric_scene(cache, sign * 100.0, friction=True))
              for sign in (1, -1)}
     sp, sm = steps[1], steps[-1]
     for st in (sp, sm):

@@ -4,8 +4,8 @@ import pytest
 from petsc4py import PETSc
 
 from closed_forms import slider_pressure, squeeze_plates_pressure, squeeze_plates_volumes
-from conftest import scene
-from sealts.problem.film_run import FilmModel, solve_steady_film
+from conftest import Recorder, scene
+from sealts.problem.film_model import FilmModel, solve_steady_film
 from sealts.problem import Problem
 
 
@@ -15,10 +15,9 @@ def run_transient(s, t_end, dt0=1e-3, stops=()):
     u0 = model.initial_state(0.0)
     u0[:model.scheme.size] = u_film[:model.scheme.size]
     problem = Problem(model.n, [model.term])
-    snaps = {}
-    u = problem.transient(u0, 0.0, t_end, dt0, stops,
-                          on_stop=lambda t, uu: snaps.__setitem__(round(t, 12), uu))
-    return model, u, snaps, problem
+    rec = Recorder()
+    u = problem.transient(u0, 0.0, t_end, dt0, stops, observers=[rec])
+    return model, u, {round(t, 12): uu for t, uu in rec.stops}, problem
 
 
 @pytest.mark.parametrize("scheme", ["fv", "paper"])
@@ -102,6 +101,9 @@ class RefusesLongSteps:
     def jacobian_values(self, t, u, udot, shift):
         return np.zeros(0)
 
+    def accepted(self, t, u):
+        self.t_prev = t
+
 
 def test_failed_steps_are_retried_smaller():
     s = scene("squeeze_plates", film={"elements": 50})
@@ -111,13 +113,9 @@ def test_failed_steps_are_retried_smaller():
     u0[:model.scheme.size] = u_film[:model.scheme.size]
     guard = RefusesLongSteps(0.05)
     problem = Problem(model.n, [model.term, guard])
-    times = [0.0]
-
-    def on_step(ts, step, t, u):
-        times.append(t)
-        guard.t_prev = t
-
-    u = problem.transient(u0, 0.0, 1.0, 0.2, on_step=on_step)
+    rec = Recorder()
+    u = problem.transient(u0, 0.0, 1.0, 0.2, observers=[rec])
+    times = [0.0] + [t for t, _ in rec.states]
     assert problem.counters.rejected >= 1
     assert times[-1] == pytest.approx(1.0)
     assert np.diff(times[1:]).max() <= 0.05 * (1 + 1e-9)

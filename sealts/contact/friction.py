@@ -84,7 +84,7 @@ p_s = 5 MPa, mu_s = 0.1) is then some 1e4 times the O-ring's own shear stiffness
 """
 import numpy as np
 
-from ..problem import Term, of_time
+from ..core import Term, of_time
 
 
 def saturation(x, blend=0.5):
@@ -185,6 +185,10 @@ class RodFriction(Term):
         moved = np.abs(new - self.anchors)[touching]
         self.anchors = new
         return float(moved.max()) if moved.size else 0.0
+
+    def accepted(self, t, u):
+        """Post-step hook: the return mapping of ``update``."""
+        self.update(t, u)
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):

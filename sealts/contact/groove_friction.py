@@ -53,7 +53,7 @@ RodFriction (path-independent within a step, anchors outside the TS error estima
 """
 import numpy as np
 
-from ..problem import Term, of_time
+from ..core import Term, of_time
 from .friction import check_law, saturation
 from .rigid import corner_arcs, softplus_penalty
 
@@ -189,6 +189,10 @@ class GrooveFriction(Term):
         moved = np.linalg.norm(new - self.anchors, axis=1)[on]
         self.anchors = new
         return float(moved.max()) if moved.size else 0.0
+
+    def accepted(self, t, u):
+        """Post-step hook: the return mapping of ``update``."""
+        self.update(t, u)
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):

@@ -30,7 +30,7 @@ import numpy as np
 
 from ..film.asperity import asperity_pressure_array
 from ..mesh.layout import vertex_dofs
-from ..problem import Term
+from ..core import Term
 
 
 def tributary_lengths(X, edges, n):

@@ -71,7 +71,7 @@ import numba
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
-from ..problem import Term, of_time
+from ..core import Term, of_time
 from .flow_factors import FlowFactors
 from .gap import h_eff
 from .reynolds_fv import conductance, element_fluxes, storage

@@ -99,7 +99,7 @@ over the chain.
 import numba
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 from .gap import h_eff_rate
 from .reynolds_fv import conductance
 from .seal_film import SealFilmTerm, nodal_conductance, set_chain

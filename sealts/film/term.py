@@ -12,7 +12,7 @@ leaving at the p_out end; V_in - V_out is the change of film volume.
 """
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 
 
 class RigidGap:

@@ -1,5 +1,6 @@
-"""Fields over time as one XDMF + HDF5 time series (ParaView: open the .xdmf, play the time
-steps, "Warp By Vector" with the displacement to see the deformed seal).
+"""Fields on the seal's mesh: the final state (``write_fields``, fields.xdmf) and fields
+over time as one XDMF + HDF5 time series (ParaView: open the .xdmf, play the time steps,
+"Warp By Vector" with the displacement to see the deformed seal).
 
 The mesh is stored once; each ``add`` appends one time step's arrays to the HDF5 file,
 flushes it, and rewrites the small XDMF file (to a temporary name, then renamed), so an
@@ -72,3 +73,22 @@ class FieldSeries:
     def close(self):
         if self.root:
             self.h5.close()
+
+
+def write_fields(path, model, u):
+    """Deformed-state fields as XDMF + HDF5 (ParaView): displacement on nodes, stresses on
+    cells, on the reference mesh (apply ParaView's 'Warp By Vector' to see the deformation)."""
+    import meshio
+
+    from ..problem.seal_model import element_stresses
+    s, mises, pressure = element_stresses(model, u)
+    disp = np.zeros((model.mesh.X.shape[0], 3))
+    disp[:, :2] = u[model.udofs]
+    points = np.zeros((model.mesh.X.shape[0], 3))
+    points[:, :2] = model.mesh.X
+    meshio.write(path, meshio.Mesh(
+        points, [("quad", model.mesh.conn)], point_data={"displacement": disp},
+        cell_data={"von_mises": [mises], "pressure": [pressure], "sigma_rr": [s[:, 0]],
+                   "sigma_zz": [s[:, 1]], "sigma_tt": [s[:, 2]], "sigma_rz": [s[:, 3]]}))
+
+

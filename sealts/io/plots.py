@@ -44,19 +44,14 @@ PROFILE_FILES = {
                     "the rod", "time"),
     "profiles": ("Film along the rod", "output time"),
 }
-MOUNT = ("Seal mounting: gap and contact pressure along the rod", "load step",
-         ("mounted", "pressurised"))
-
-
 def _profile_defaults(path, keys, times):
     """(title, legend title, one label per time) for a profile file the caller did not
-    describe. A seal scene's profiles.csv (y, h, p_contact) holds the mounted and then
-    the pressurised state at load-step pseudo-times."""
+    describe. A seal scene's profiles.csv (y, h, p_contact) holds its load steps (the
+    writer passes their names as labels)."""
     stem = Path(path).stem
     if stem == "profiles" and "p_contact" in keys and "p" not in keys:
-        title, legend, names = MOUNT
-        return title, legend, [f"{names[i]}, pseudo-time {t:g}" if i < len(names)
-                               else f"pseudo-time {t:g}" for i, t in enumerate(times)]
+        return ("Seal mounting: gap and contact pressure along the rod", "load step",
+                [f"pseudo-time {t:g}" for t in times])
     title, legend = PROFILE_FILES.get(stem, PROFILE_FILES["profiles"])
     return title, legend, [f"t = {t:.4g} s" for t in times]
 
@@ -76,8 +71,8 @@ def plot_profiles(profiles, path, title=None, time_labels=None, time_title=None)
     p, p_asperity, p_contact, p_fluid, tau, tau_solid (MPa), dp_dy (MPa/mm); unknown
     columns get a panel under their own name. ``title``, ``time_labels`` (one string per
     profile) and ``time_title`` (the legend's title) default from the file name: e.g.
-    "t = 0.5 s" for each output time, or "mounted"/"pressurised" for a seal's
-    profiles.csv. Returns the Figure."""
+    "t = 0.5 s" for each output time, "pseudo-time 2" for a seal's load steps. Returns
+    the Figure."""
     first = profiles[0][1]
     keys = [k for k in PROFILE_QUANTITIES if k in first]
     keys += [k for k in first if k != "y" and k not in PROFILE_QUANTITIES]

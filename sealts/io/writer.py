@@ -35,8 +35,10 @@ class Writer:
         self._series = []
         if self.root:
             self.dir.mkdir(parents=True, exist_ok=True)
-            for name in ("profiles.csv", "series.csv", "hold_profiles.csv",
-                         "stroke_profiles.csv", "summary.json"):
+            # an earlier run's outputs would read as this run's (series.h5 is written
+            # only at the end)
+            for name in ("profiles.csv", "series.csv", "series.h5", "hold_profiles.csv",
+                         "stroke_profiles.csv", "ihl_profile.csv", "summary.json"):
                 (self.dir / name).unlink(missing_ok=True)
 
     def _csv(self, name, fields):
@@ -47,10 +49,12 @@ class Writer:
             self._files[name] = (f, w)
         return self._files[name]
 
-    def profile(self, t, prof, name="profiles.csv"):
+    def profile(self, t, prof, name="profiles.csv", label=None):
+        """One profile at time t (a dict of arrays along y) into the long CSV file
+        ``name``; ``label`` names it in the plot (default: its time)."""
         if not self.root:
             return
-        self._profiles.setdefault(name, []).append((t, prof))
+        self._profiles.setdefault(name, []).append((t, prof, label))
         keys = ["t"] + list(prof)
         f, w = self._csv(name, keys)
         cols = [np.asarray(prof[k]) for k in prof]
@@ -101,6 +105,17 @@ class Writer:
         if self.plots:
             from .plots import plot_profiles, plot_series
             for name, profiles in self._profiles.items():
-                plot_profiles(profiles, self.dir / name.replace(".csv", ".png"))
+                labels = [lab for _, _, lab in profiles]
+                plot_profiles([(t, prof) for t, prof, _ in profiles],
+                              self.dir / name.replace(".csv", ".png"),
+                              time_labels=labels if None not in labels else None)
             if self._series:
                 plot_series(self._series, self.dir / "series.png")
+
+
+class NullWriter(Writer):
+    """A Writer that writes nothing (steps run from tests, benchmarks and scripts)."""
+
+    def __init__(self):
+        self.dir, self.root, self.plots = Path(os.devnull), False, False
+        self._files, self._profiles, self._series = {}, {}, []

@@ -35,7 +35,7 @@ its local vector only, apart from the gathers of the full state for outputs.
 import numpy as np
 from petsc4py import PETSc
 
-from ..problem import Term
+from ..core import Term
 from .layout import label_boundaries
 
 
@@ -209,3 +209,9 @@ class SerialTermOnLocal(Term):
     def jacobian_values(self, t, u, udot, shift):
         us, uds = self._load(u, udot)
         return self.term.jacobian_values(t, us, uds, shift)
+
+    def accepted(self, t, u):
+        """The term's own hook (u is full and serial already). It runs on rank 0 alone,
+        where the term is assembled; a hook every rank must run (a guard that may end the
+        run) is a term of its own outside ``on_root``."""
+        self.term.accepted(t, u)

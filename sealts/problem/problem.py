@@ -33,59 +33,15 @@ Terms work on a rank's *local* arrays: ``add_residual`` gets the local u, udot a
   the rows (residual and COO entries) it owns.
 
 Full vectors handed to and from a Problem (``u0``, what ``transient``, ``solve_steady``,
-``on_step`` and ``gather`` give) are in serial order on every rank (a ``toAll`` scatter,
-reordered by the Numbering's ``natural``). A constrained row is written by its owner only;
+the post-step hooks, the observers and ``gather`` get) are in serial order on every rank
+(a ``toAll`` scatter, reordered by the Numbering's ``natural``). A constrained row is written by its owner only;
 every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
 (the default parallel preconditioner is ``redundant`` LU).
 """
-from dataclasses import dataclass
-
 import numpy as np
 from petsc4py import PETSc
 
-
-class SolveError(RuntimeError):
-    """A solve that PETSc could not complete (diverged SNES, TS that could not step)."""
-
-
-def of_time(x):
-    """A term's parameter given as a number or as a function of t, as a function of t."""
-    return x if callable(x) else (lambda t, x=float(x): x)
-
-
-class Term:
-    """Interface of a physics term (see module docstring)."""
-
-    rows: np.ndarray
-    cols: np.ndarray
-
-    def add_residual(self, t, u, udot, f):
-        raise NotImplementedError
-
-    def jacobian_values(self, t, u, udot, shift):
-        raise NotImplementedError
-
-
-class Constraints:
-    """Prescribed unknowns u[dofs] = values(t)."""
-
-    def __init__(self, dofs, values):
-        self.dofs = np.asarray(dofs, np.int64)
-        self._values = values
-
-    def values(self, t):
-        v = self._values(t) if callable(self._values) else self._values
-        return np.broadcast_to(np.asarray(v, float), self.dofs.shape)
-
-
-@dataclass
-class Counters:
-    steps: int = 0
-    rejected: int = 0
-    newton: int = 0
-    linear: int = 0
-    residuals: int = 0
-    jacobians: int = 0
+from ..core import Counters, SolveError, StepInfo
 
 
 class Problem:
@@ -121,6 +77,7 @@ class Problem:
         self.prefix = prefix
         self.fields = dict(fields or {})
         self.counters = Counters()
+        self._set_defaults = []       # options set by _default_option, dropped after use
 
         if dofs is None:      # replicated: every rank has every dof, adds its own rows
             self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
@@ -320,11 +277,11 @@ class Problem:
         if not opts.hasName(name):
             opts[name] = value
             if not keep:
-                self._set_defaults = getattr(self, "_set_defaults", []) + [name]
+                self._set_defaults.append(name)
 
     def _drop_defaults(self):
         opts = PETSc.Options(self.prefix)
-        for name in getattr(self, "_set_defaults", []):
+        for name in self._set_defaults:
             opts.delValue(name)
         self._set_defaults = []
 
@@ -376,6 +333,11 @@ class Problem:
         self._set_splits(ts.getSNES().getKSP())
         return ts
 
+    def accepted(self, t, u):
+        """Every term's post-step hook at the accepted state u (full, serial order)."""
+        for term in self.terms:
+            term.accepted(t, u)
+
     # ---- solves ----------------------------------------------------------------------------
     def _owned(self, u0):
         X = self.U.duplicate()
@@ -401,53 +363,63 @@ class Problem:
         snes.destroy()
         return u
 
-    def transient(self, u0, t0, t_end, dt0, stops=(), on_step=None, on_stop=None,
-                  rtol=1e-6, atol=1e-8):
-        """Integrate from t0 to t_end with adaptive steps.
+    def transient(self, u0, t0, t_end, dt0, stops=(), observers=(), rtol=1e-6, atol=1e-8):
+        """Integrate from t0 to t_end with adaptive steps; return the full final state.
 
-        ``on_step(ts, step, t, u)`` runs after every accepted step (and at t0); a
-        SolveError it raises ends the run with its own message;
-        ``on_stop(t, u)`` at each time in ``stops`` (hit exactly) and at t_end. ``atol``: a
-        number, or one per unknown (full, serial order; a huge one leaves that unknown out of
-        the local error estimate).
+        After every accepted step (and at t0) each term's post-step hook ``accepted(t, u)``
+        runs, then each observer's ``accepted(t, u, info)`` (:class:`sealts.core.Observer`);
+        a SolveError either raises ends the run with its own message. ``observer.stop(t, u)``
+        runs at each time in ``stops`` (hit exactly) and at t_end. ``atol``: a number, or one
+        per unknown (full, serial order; a huge one leaves that unknown out of the local
+        error estimate).
         """
         last = [None]
         raised = []
+        observers = list(observers)
 
         def monitor(ts, step, t, X):
             # TS calls its monitor at the start of every solve(): report each state once
-            if on_step is not None and t != last[0]:
-                last[0] = t
-                try:
-                    on_step(ts, step, t, self.gather(X).copy())
-                except SolveError as e:    # PETSc would turn it into "error 101"
-                    raised.append(e)
-                    raise
+            if t == last[0]:
+                return
+            last[0] = t
+            try:
+                u = self.gather(X).copy()
+                self.accepted(t, u)
+                info = StepInfo(step, ts.getTimeStep(), ts.getSNESIterations())
+                for obs in observers:
+                    obs.accepted(t, u, info)
+            except SolveError as e:    # PETSc would turn it into "error 101"
+                raised.append(e)
+                raise
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
         X = self._owned(u0)
         targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
-        for target in targets:
-            ts.setMaxTime(target)
-            try:
-                ts.solve(X)
-            except PETSc.Error as e:
-                if raised:       # a monitor's own verdict (one line) stands
-                    raise raised[0] from None
-                raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
-                                 f"(PETSc error {e.ierr}); see the PETSc message above") from None
-            reason = ts.getConvergedReason()
-            if reason < 0:
-                raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
-                                 f"({_reason(PETSc.TS, reason)}); try a smaller -ts_dt or "
-                                 "-ts_adapt_dt_min")
-            if on_stop is not None:
-                on_stop(ts.getTime(), self.gather(X).copy())
-        c = self.counters
-        c.steps += ts.getStepNumber()
-        c.rejected += ts.getStepRejections()
-        c.newton += ts.getSNESIterations()
-        c.linear += ts.getKSPIterations()
+        try:
+            for target in targets:
+                ts.setMaxTime(target)
+                try:
+                    ts.solve(X)
+                except PETSc.Error as e:
+                    if raised:       # a hook's or observer's own verdict (one line) stands
+                        raise raised[0] from None
+                    raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
+                                     f"(PETSc error {e.ierr}); see the PETSc message above"
+                                     ) from None
+                reason = ts.getConvergedReason()
+                if reason < 0:
+                    raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
+                                     f"({_reason(PETSc.TS, reason)}); try a smaller -ts_dt "
+                                     "or -ts_adapt_dt_min")
+                u = self.gather(X).copy()
+                for obs in observers:
+                    obs.stop(ts.getTime(), u)
+        finally:
+            c = self.counters
+            c.steps += ts.getStepNumber()
+            c.rejected += ts.getStepRejections()
+            c.newton += ts.getSNESIterations()
+            c.linear += ts.getKSPIterations()
         u = self.gather(X).copy()
         ts.destroy()
         return u

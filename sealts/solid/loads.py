@@ -1,7 +1,7 @@
 """External loads on the seal as a physics term: prescribed nodal forces scaled in time."""
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 
 
 class NodalForces(Term):

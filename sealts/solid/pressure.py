@@ -42,7 +42,7 @@ pressure (front update and static solve in turn, until it stops moving).
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
-from ..problem import Term
+from ..core import Term
 
 
 def boundary_loop(conn):
@@ -208,21 +208,35 @@ class PressureLoad(Term):
         return K.ravel()
 
 
-class RelaxedFront:
-    """Front updates for a long transient run: each front moves by omega times its way to
-    ``target_reach``, at most ``max_advance`` edges forward. omega halves whenever the front
-    reverses and doubles (up to 1) while it keeps its direction. Met in the viscoelastic hold
-    at 5 MPa: at t = 10.45 s a front flipped between two positions at every step, each
-    position's equilibrium pointing at the other, and the adaptive step collapsed."""
+class AdvancingFront(Term):
+    """The front's post-step hook while the pressure rises (step 2): after every accepted
+    step the fronts move to ``target_reach``, advancing only. ``contact_pressure(t, u)``:
+    the nodal wall contact pressures (MPa) at a state."""
 
-    def __init__(self, load, max_advance=1.0):
-        self.load, self.max_advance = load, max_advance
+    def __init__(self, load, contact_pressure):
+        self.load, self.contact_pressure = load, contact_pressure
+
+    def accepted(self, t, u):
+        self.load.update(self.contact_pressure(t, u), self.load.pressure(t), recede=False)
+
+
+class RelaxedFront(Term):
+    """The front's post-step hook for a long transient run (the hold): each front moves by
+    omega times its way to ``target_reach``, at most ``max_advance`` edges forward. omega
+    halves whenever the front reverses and doubles (up to 1) while it keeps its direction.
+    Met in the viscoelastic hold at 5 MPa: at t = 10.45 s a front flipped between two
+    positions at every step, each position's equilibrium pointing at the other, and the
+    adaptive step collapsed. ``contact_pressure(t, u)`` as for :class:`AdvancingFront`."""
+
+    def __init__(self, load, contact_pressure, max_advance=1.0):
+        self.load, self.contact_pressure = load, contact_pressure
+        self.max_advance = max_advance
         self.omega = [1.0, 1.0]
         self.direction = [0.0, 0.0]
 
-    def __call__(self, contact_pressure_at_nodes, p):
+    def accepted(self, t, u):
         L = self.load
-        target = L.target_reach(contact_pressure_at_nodes, p)
+        target = L.target_reach(self.contact_pressure(t, u), L.pressure(t))
         reach = []
         for i, (goal, now) in enumerate(zip(target, L.reach)):
             d = float(np.sign(goal - now))

@@ -29,7 +29,7 @@ stroke does not use the gauge: there friction holds (or rolls) the ring physical
 """
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 
 
 def circle_fit(P):

@@ -5,12 +5,13 @@ Every displacement is prescribed, so only the Prony internal variables evolve, a
 shear stress S12 = keep S_iso,12 - sum_active g_i H_i,12 (keep = 1 - sum_relaxed g) is
 read at the Gauss points (the state is homogeneous). Relaxed terms are folded into the
 elastic modulus and frozen ones dropped (from a virgin state their H stays 0), as
-:class:`sealts.problem.hold_run.HoldStep` builds them.
+:class:`sealts.problem.hold_problem.HoldProblem` builds them.
 """
 import numpy as np
 
+from ..core import Constraints
+from ..io.observers import Recorder
 from ..problem import Problem
-from ..problem.problem import Constraints
 from .term import NeoHooke, SolidTerm
 from .viscoelastic import PronyTerm, iso_stress
 
@@ -44,12 +45,12 @@ def shear_history(series, times, gamma, classes=None, shift=1.0, stops=(), c10_i
     u0[:8] = gamma(0.0) * shape if callable(gamma) else gamma * shape
     out = {}
 
-    def record(t, u):
+    rec = Recorder()
+    problem.transient(u0, 0.0, times[-1], dt0, stops=list(times[:-1]) + list(stops),
+                      observers=[rec], rtol=rtol, atol=atol)
+    for t, u in rec.stops:
         S = iso_stress(u[:8], conn, solid.B, inst.c10, 0.0)[0, 0]
         H = u[hdofs].reshape(4, na, 4)[0]
         out[t] = (keep * S[3] - series.g[act] @ H[:, 3]) / (2 * inst.c10)
-
-    problem.transient(u0, 0.0, times[-1], dt0, stops=list(times[:-1]) + list(stops),
-                      on_stop=record, rtol=rtol, atol=atol)
     got = np.array([out[min(out, key=lambda s: abs(s - t))] for t in times])
     return got, problem

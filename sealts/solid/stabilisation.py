@@ -9,7 +9,7 @@ creeping) state cannot pass for an equilibrium.
 """
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 
 
 class ViscousStabilisation(Term):

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 from ..mesh.layout import vertex_dofs
 from .q1p0 import element_forces, gauss_operators
 

@@ -33,7 +33,7 @@ dr_H/du = -g_i w dS_iso/df B, and the diagonal dr_H/dH = g_i w (shift tau_i A + 
 import numba
 import numpy as np
 
-from ..problem import Term
+from ..core import Term
 from .mooney_rivlin import isochoric_i2
 from .neo_hooke import isochoric
 

@@ -1,11 +1,8 @@
-"""Film-only scenes: a film on a rigid gap, solved steady (SNES) or transient (TS).
+"""Film-only scenes: a film on a rigid gap (``model = "film"``), its nodes, scheme and term.
 
-Data flow: scene -> film nodes y -> scheme (unknown layout) -> FilmTerm -> Problem -> output.
-A transient run starts from the consistent steady pressure at t = 0 (the film pressure is an
-algebraic unknown of the DAE) and integrates the leakage volumes with the TS.
+Data flow: scene -> film nodes y -> scheme (unknown layout) -> FilmTerm -> Problem. The
+film-only steps (:mod:`sealts.steps.film`) solve it steady (SNES) or transient (TS).
 """
-import time
-
 import numpy as np
 
 from ..film.flow_factors import FlowFactors
@@ -104,82 +101,3 @@ def solve_steady_film(scene, comm=None, t=None):
     u0 = model.initial_state(t)
     problem = Problem(model.n, [model.term], comm=comm)
     return model, problem.solve_steady(u0, t), problem
-
-
-class Progress:
-    """Throttled one-line progress reports on rank 0."""
-
-    def __init__(self, comm, enabled=True, every=1.0):
-        self.on = enabled and comm.getRank() == 0
-        self.every, self.last = every, -1e9
-
-    def __call__(self, line, force=False):
-        now = time.perf_counter()
-        if self.on and (force or now - self.last >= self.every):
-            print(line, flush=True)
-            self.last = now
-
-
-def run_film(scene, writer, comm):
-    """Run a film-only scene, writing through ``writer``; returns the summary dict."""
-    t_wall = time.perf_counter()
-    a = scene.analysis
-    say = Progress(comm, scene.output.progress)
-    if a.type == "steady":
-        model, u, problem = solve_steady_film(scene, comm)
-        say(f"steady film solved: {problem.counters.newton} Newton, "
-            f"{problem.counters.linear} linear iterations", force=True)
-        writer.profile(a.time, model.profile(a.time, u))
-        results = model.scalars(a.time, u)
-        counters = problem.counters
-    else:
-        # consistent initial film pressure, then the DAE with the leakage volumes
-        _, u_film, pre = solve_steady_film(scene, comm, t=0.0)
-        model = FilmModel(scene, transient=True)
-        u0 = model.initial_state(0.0)
-        u0[:model.scheme.size] = u_film[:model.scheme.size]
-        problem = Problem(model.n, [model.term], comm=comm)
-        writer.profile(0.0, model.profile(0.0, u0))
-        results_t0 = model.scalars(0.0, u0)
-        state = {"newton": 0}
-
-        def on_step(ts, step, t, u):
-            row = model.scalars(t, u)
-            its = ts.getSNESIterations()
-            row.update(dt=ts.getTimeStep(), v=model.v_of_t(t), newton=its - state["newton"])
-            state["newton"] = its
-            writer.series(row)
-            say(f"step {step:5d}  t = {t:.6g} s  dt = {row['dt']:.3g} s  "
-                f"Newton {row['newton']}  h_min = {row['h_min'] * 1e3:.4g} um")
-
-        def on_stop(t, u):
-            writer.profile(t, model.profile(t, u))
-            say(f"output at t = {t:.6g} s", force=True)
-
-        u = problem.transient(u0, 0.0, a.t_end, a.dt, a.output_times, on_step, on_stop)
-        results = model.scalars(a.t_end, u)
-        counters = problem.counters
-        counters.newton += pre.counters.newton
-        counters.linear += pre.counters.linear
-    summary = {
-        "scene": scene.name,
-        "source": scene.source,
-        "analysis": a.type,
-        "scheme": scene.film.scheme,
-        "unknowns": model.n,
-        "ranks": comm.getSize(),
-        "wall_time_s": time.perf_counter() - t_wall,
-        "steps_accepted": counters.steps,
-        "steps_rejected": counters.rejected,
-        "newton_iterations": counters.newton,
-        "linear_iterations": counters.linear,
-        "residual_evaluations": counters.residuals,
-        "jacobian_evaluations": counters.jacobians,
-        "results": results,
-        "units": {"length": "mm", "pressure": "MPa", "force": "N", "time": "s",
-                  "flow": "mm^3/s", "volume": "mm^3"},
-    }
-    if a.type == "transient":
-        summary["results_t0"] = results_t0
-    writer.summary(summary)
-    return summary

@@ -1,4 +1,4 @@
-"""Step 3 of a seal scene: the transient stroke with the film (``[stroke] velocity``).
+"""The DAE of the transient stroke with the film (step 3 with ``[stroke] velocity``).
 
 From the pressurised long-term state of steps 1-2 (dry, pressure penetration settled), one
 monolithic DAE for seal plus film (paper Section 3.1.1, step 3):
@@ -22,28 +22,24 @@ monolithic DAE for seal plus film (paper Section 3.1.1, step 3):
 * the rod's axial velocity v(t) (:mod:`sealts.contact.rod_motion`) drives the film; TS
   steps the DAE with adaptive BDF and hits the law's kinks, reversals and output times.
 
-Output: series.csv per accepted step; at t = 0, each of stroke.output_times and t_end the
-profiles (stroke_profiles.csv) and the fields (stroke_fields.xdmf/.h5, a time series:
-displacement and film pressure on nodes, the Cauchy stresses on cells, with the Prony
-part in a viscoelastic stroke).
+Its outputs (series, profiles, fields) are observers of the stroke step
+(:mod:`sealts.steps.stroke`).
 
 Leakage: Q_in enters the film at the pressure side, Q_out leaves it at the atmosphere side
 (Eq. 41); V_in and V_out (Eq. 42) are two more unknowns, dV/dt = Q
 (:class:`sealts.film.seal_film.LeakageTerm`), so TS integrates them with the film and
-V_in - V_out is the film's growth. The flows printed per step take U' as the step's
-difference quotient (output only). The transport per stroke direction sums the steps' V_out
-increments by the sign of v.
+V_in - V_out is the film's growth.
 
 * solid friction (``stroke.friction``): :class:`sealts.contact.friction.RodFriction`, mu_s
   p_s on the asperity contact with an elastic slip gamma_crit, and
   :class:`sealts.contact.groove_friction.GrooveFriction`, ``groove.mu`` times the wall
   pressure on the groove's bottom and side walls with the same gamma_crit (without it the
   rod's friction rolls the O-ring in its frictionless groove); their anchors are updated
-  after every accepted step (TS stops at the rod's reversals). ``friction_groove`` in the
-  series is the walls' axial friction force on the seal.
+  by their post-step hooks after every accepted step (TS stops at the rod's reversals).
+  ``friction_groove`` in the series is the walls' axial friction force on the seal.
 
 * viscoelastic (``viscoelastic.prony``): the Prony terms of the hold
-  (:class:`sealts.problem.hold_run.ViscoelasticSolid`), classified over
+  (:class:`sealts.solid.viscoelastic_solid.ViscoelasticSolid`), classified over
   [viscoelastic.t_min, stroke.t_end], from a relaxed start: the start is solved with the
   long-term material, then every H_i = S_iso(u) and the frozen terms' stress is set there
   (paper step 3).
@@ -53,34 +49,34 @@ increments by the sign of v.
 
 Not yet in the stroke: updating the pressure penetration front during the stroke.
 """
-import time
-
 import numpy as np
 
 from ..contact.friction import RodFriction
 from ..contact.groove_friction import GrooveFriction
 from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
+from ..core import Constraints
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
 from ..mesh.layout import Layout
 from ..solid.pressure import PressureLoad
 from ..solid.term import SolidTerm
-from .film_run import flow_factors_of
-from .problem import Constraints, Problem
+from ..solid.viscoelastic_solid import ViscoelasticSolid
+from .film_model import flow_factors_of
+from .problem import Problem
 
 
-class StrokeStep:
-    """The coupled seal + film DAE of the stroke, built on a pressurised SealModel."""
+class StrokeProblem:
+    """The coupled seal + film DAE of the stroke, built on a pressurised SealModel, with the
+    front ``load`` of step 2 (None: unpressurised)."""
 
-    def __init__(self, model, u0, scene, comm=None):
+    def __init__(self, model, u0, scene, load=None):
         self.model, self.scene = model, scene
         self.motion = motion_from_scene(scene.stroke)
         mesh, X = model.mesh, model.mesh.X
         ve = scene.viscoelastic
         self.viscoelastic = None
         if ve.prony != "none":
-            from .hold_run import ViscoelasticSolid
             self.viscoelastic = ves = ViscoelasticSolid(model, ve, scene.stroke.t_end)
         prony_size = self.viscoelastic.prony_size if self.viscoelastic else 0
         wet = scene.stroke.film
@@ -138,7 +134,7 @@ class StrokeStep:
                                                   gamma_crit=scene.stroke.gamma_crit)
             terms.append(self.groove_friction)
         self.load = None
-        old = getattr(model, "load", None)
+        old = load
         if old is not None:
             # step 2's wetting, without the rod side when the film carries it
             self.load = PressureLoad(X, mesh.conn, lambda t: fl.p_in, axisym,
@@ -156,8 +152,10 @@ class StrokeStep:
             prony = lay.field_dofs("prony")
             fields = {"prony": prony,
                       "displacement": np.setdiff1d(np.arange(self.n), prony)}
-        self.problem = Problem(self.n, terms, comm=comm, prefix="stroke_", linesearch="basic",
-                               snes_atol=1e-9 * model.force_scale, fields=fields)
+        # post-step hooks run in the terms' order: the rod-side guard first, then the
+        # frictions' return mapping
+        terms.insert(0, model.rod_side_guard(ud, model.r_rod_final))
+        self.problem = model.problem(self.n, terms, prefix="stroke_", fields=fields)
 
     def start(self):
         """Film pressures with the seal held, then seal and film in equilibrium at t = 0."""
@@ -186,27 +184,19 @@ class StrokeStep:
                                           self.model.material, self.model.axisym,
                                           udofs=lay.udofs)]
             fixed = np.concatenate([fixed, lay.prony_dofs.ravel()])
-        start = Problem(n, statics, comm=comm, linesearch="basic",
-                        constraints=Constraints(fixed, U[fixed]),
-                        snes_atol=1e-9 * self.model.force_scale, prefix="stroke_start_")
+        start = self.model.problem(n, statics, constraints=Constraints(fixed, U[fixed]),
+                                   prefix="stroke_start_")
         U = start.solve_steady(U, 0.0)
         self.problem.counters.newton += start.counters.newton
         if self.prony is not None:
             U[lay.prony_dofs] = self.viscoelastic.relax(self.prony, U)
-        self.accepted(0.0, U)
+        self.problem.accepted(0.0, U)
         return U
 
     @property
     def frictions(self):
         """The friction terms in use (rod, groove walls)."""
         return [f for f in (self.friction, self.groove_friction) if f is not None]
-
-    def accepted(self, t, U):
-        """After an accepted step: the frictions' elastic slips are capped (their anchors);
-        a seal whose rod side has left the rod is a SolveError (``check_rod_side``)."""
-        self.model.check_rod_side(t, U, self.layout.udofs, self.model.r_rod_final)
-        for fr in self.frictions:
-            fr.update(t, U)
 
     def displacement(self, U):
         """The displacement-only vector of the SealModel's layout (for its outputs)."""
@@ -257,7 +247,7 @@ class StrokeStep:
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
                 "asperity_contact_length": length, "p_fluid_max": p_max}
 
-    def run(self, U0, t_end, dt0, rtol, output_times=(), on_step=None, on_stop=None):
+    def run(self, U0, t_end, dt0, rtol, output_times=(), observers=()):
         m = self.motion
         stops = sorted(set(output_times) | set(m.kinks(t_end)) | set(m.reversals(t_end)))
         atol = 1e-6
@@ -268,105 +258,5 @@ class StrokeStep:
             # default scheme's (u, p, V)
             atol = np.full(self.n, 1e-6)
             atol[self.xdofs] = 1e300
-        return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops, on_step=on_step,
-                                      on_stop=on_stop, rtol=rtol, atol=atol)
-
-
-def run_stroke(model, u, scene, writer, comm, say):
-    """Step 3 with the film: series, profiles at the output times, leakage and friction
-    per cycle. Returns (displacement at the end, summary part, counters)."""
-    st = scene.stroke
-    t_wall = time.perf_counter()
-    step = StrokeStep(model, u, scene, comm)
-    lay = step.layout
-    if step.viscoelastic:
-        ves = step.viscoelastic
-        say(ves.classes.describe(ves.series, ves.shift), force=True)
-    say(f"stroke: {st.velocity} v(t), v_max = {st.v_max:g} mm/s, to t = {st.t_end:g} s; "
-        f"{step.n} unknowns ({lay.film_dofs.size} film pressures, "
-        f"{scene.film.scheme + ' film' if step.film is not None else 'dry'})",
-        force=True)
-    U = step.start()
-    s0 = step.scalars(0.0, U)
-    say(f"stroke start: film load {s0['load_fluid']:.5g} N, asperity load "
-        f"{s0['load_asperity']:.5g} N, Q_out = {s0['Q_out']:.4g} mm^3/s", force=True)
-    state = {"t": None, "U": None, "work": 0.0, "F": 0.0, "v": 0.0, "rows": [],
-             "transport": {1: 0.0, -1: 0.0}}
-
-    def on_step(ts, k, t, Ut):
-        step.accepted(t, Ut)
-        Udot = None
-        if state["t"] is not None and t > state["t"]:
-            Udot = (Ut - state["U"]) / (t - state["t"])
-        row = step.scalars(t, Ut, Udot)
-        if Udot is not None:
-            dt = t - state["t"]
-            # friction work: the power F v the rod spends dragging the seal's surface
-            state["work"] += 0.5 * dt * (state["F"] * state["v"]
-                                         + row["friction_total"] * row["v"])
-            way = 1 if state["v"] + row["v"] > 0.0 else -1
-            state["transport"][way] += row["V_out"] - state["rows"][-1]["V_out"]
-        state.update(t=t, U=Ut, F=row["friction_total"], v=row["v"])
-        its = ts.getSNESIterations()
-        row = {"t": t, **row, "dt": ts.getTimeStep(), "newton": its}
-        state["rows"].append(row)
-        writer.series(row)
-        say(f"stroke step {k:5d}  t = {t:.5g} s  dt = {ts.getTimeStep():.3g}  "
-            f"v = {row['v']:.4g} mm/s  Newton {its}  min h = {row['h_min'] * 1e3:.4g} um")
-
-    from ..io.fields import FieldSeries
-    from .seal_run import element_stresses
-    mesh = model.mesh
-    fields = FieldSeries(writer.dir / "stroke_fields.xdmf", mesh.X, mesh.conn, writer.root)
-
-    wanted = sorted(set(st.output_times) | {0.0, st.t_end})
-
-    def snapshot(t, Ut):
-        """Profiles and fields at an output time (not at the other TS stops: kinks and
-        reversals of v): displacement and film pressure on nodes, the Cauchy stresses on
-        cells (with the Prony part when viscoelastic)."""
-        if not any(abs(t - w) <= 1e-9 * max(1.0, w) for w in wanted):
-            return
-        writer.profile(t, step.profile(t, Ut), name="stroke_profiles.csv")
-        if not writer.root:
-            return
-        u = step.displacement(Ut)
-        disp = np.zeros((mesh.X.shape[0], 3))
-        disp[:, :2] = u[model.udofs]
-        p = np.zeros(mesh.X.shape[0])
-        p[lay.rod_nodes] = Ut[lay.film_dofs]          # none without the film
-        if step.viscoelastic is None:
-            sig, mises, pressure = element_stresses(model, u)
-        else:
-            sig, mises, pressure = element_stresses(model, Ut, step.solid, step.prony)
-        cells = {"von_mises": mises, "pressure": pressure, "sigma_rr": sig[:, 0],
-                 "sigma_zz": sig[:, 1], "sigma_tt": sig[:, 2], "sigma_rz": sig[:, 3]}
-        fields.add(t, {"displacement": disp, "film_pressure": p}, cells)
-
-    snapshot(0.0, U)
-    try:
-        U = step.run(U, st.t_end, st.dt, st.rtol, st.output_times, on_step, snapshot)
-    finally:
-        fields.close()
-    rows = state["rows"]
-    v = np.array([r["v"] for r in rows])
-    F = np.array([r["friction_total"] for r in rows])
-    c = step.problem.counters
-    info = {
-        "velocity": st.velocity, "v_max": st.v_max, "t_end": st.t_end,
-        "film": step.film is not None,
-        "film_scheme": scene.film.scheme if step.film is not None else "none",
-        "unknowns": int(step.n),
-        "leakage_in": rows[-1]["V_in"], "leakage_out": rows[-1]["V_out"],
-        "outstroke_transport": state["transport"][1],
-        "instroke_transport": state["transport"][-1],
-        "peak_friction_outstroke": float(np.abs(F[v > 0]).max()) if (v > 0).any() else 0.0,
-        "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
-        "friction_work": state["work"],
-        "h_min": float(min(r["h_min"] for r in rows)),
-        "steps_accepted": c.steps, "steps_rejected": c.rejected,
-        "newton_iterations": c.newton, "linear_iterations": c.linear,
-        "wall_time_s": time.perf_counter() - t_wall,
-        "units": {"volume": "mm^3", "force": "N", "work": "N mm"},
-    }
-    return step.displacement(U), info, c
+        return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops, observers=observers,
+                                      rtol=rtol, atol=atol)

@@ -1,0 +1,101 @@
+"""What a problem is made of, without PETSc or numba: terms, constraints, solve errors and
+iteration counters. ``sealts check`` and ``sealts keys`` stop here.
+
+A physics term (:class:`Term`) supplies its Jacobian's COO pattern (``rows``, ``cols``),
+its residual and its Jacobian values, and, if it carries history, a post-step hook
+``accepted(t, u)`` that :class:`sealts.problem.Problem` calls after every accepted step
+(docs/design.md, "Term lifecycle").
+"""
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+
+class SolveError(RuntimeError):
+    """A solve that could not be completed (diverged SNES, a TS that could not step, a
+    state that left the model's range); its message is one line naming the cause."""
+
+
+def of_time(x):
+    """A term's parameter given as a number or as a function of t, as a function of t."""
+    return x if callable(x) else (lambda t, x=float(x): x)
+
+
+class Term:
+    """A physics term of the DAE F(t, U, U') = sum_terms F_term = 0.
+
+    * ``rows, cols``: its Jacobian's COO pattern in local dof numbers, fixed for the run;
+    * ``add_residual(t, u, udot, f)``: adds its part of F to the local array f;
+    * ``jacobian_values(t, u, udot, shift)``: dF/dU + shift dF/dU' for its pattern
+      (duplicates add up);
+    * ``accepted(t, u)``: the post-step hook, after every accepted step and at the start
+      (u full, in serial order); the term's history moves here. A SolveError raised here
+      ends the run with its message.
+    """
+
+    rows = np.zeros(0, np.int64)
+    cols = np.zeros(0, np.int64)
+
+    def add_residual(self, t, u, udot, f):
+        pass
+
+    def jacobian_values(self, t, u, udot, shift):
+        return np.zeros(0)
+
+    def accepted(self, t, u):
+        """Post-step hook: nothing to do for a term without history."""
+
+
+class Constraints:
+    """Prescribed unknowns u[dofs] = values(t)."""
+
+    def __init__(self, dofs, values):
+        self.dofs = np.asarray(dofs, np.int64)
+        self._values = values
+
+    def values(self, t):
+        v = self._values(t) if callable(self._values) else self._values
+        return np.broadcast_to(np.asarray(v, float), self.dofs.shape)
+
+
+@dataclass
+class Counters:
+    """Work done by the solvers of one problem or step (merge them with ``+``)."""
+    steps: int = 0
+    rejected: int = 0
+    newton: int = 0
+    linear: int = 0
+    residuals: int = 0
+    jacobians: int = 0
+
+    def __add__(self, other):
+        return Counters(*[getattr(self, f.name) + getattr(other, f.name)
+                          for f in fields(self)])
+
+    def add(self, other):
+        """Add another's counts to these (in place); returns self."""
+        for f in fields(self):
+            setattr(self, f.name, getattr(self, f.name) + getattr(other, f.name))
+        return self
+
+
+@dataclass
+class StepInfo:
+    """What the time stepper reports with an accepted step: its number, the size of the
+    step that comes next (s), and the Newton iterations of this run so far."""
+    step: int
+    dt: float
+    newton: int
+
+
+class Observer:
+    """An output attached to a Problem's post-step (docs/design.md, "Observers"): after the
+    terms' hooks, ``accepted(t, u, info)`` sees every accepted state (and the start), u full
+    and in serial order; ``stop(t, u)`` the states at the run's stop times (output times
+    and the end). Both do nothing by default."""
+
+    def accepted(self, t, u, info):
+        pass
+
+    def stop(self, t, u):
+        pass

@@ -1,0 +1,79 @@
+"""The DAE of the viscoelastic pressure step and hold (step 3 with ``[hold] p_end``).
+
+From the pressurised long-term state u0 (steps 1-2), the sealed pressure steps from p_from
+to p_to over t_ramp and is held, in real time (s), with the Prony material of
+:mod:`sealts.solid.viscoelastic_solid` from a relaxed start. The active Prony terms are the
+``prony`` field on cells (see :mod:`sealts.mesh.partition`: each rank carries those of its
+own cells) and TS integrates them with the displacements. The rod and groove are at their
+final positions; the pressure-penetration front moves after each accepted step as in step
+2, under-relaxed where it reverses (:class:`sealts.solid.pressure.RelaxedFront`, a
+post-step hook), and the rod-side guard checks every accepted state.
+"""
+import copy
+
+import numpy as np
+
+from ..contact.rigid import node_contact_pressure
+from ..solid.pressure import PressureLoad, RelaxedFront
+from ..solid.viscoelastic_solid import ViscoelasticSolid
+from .seal_model import ramp
+
+
+class HoldProblem:
+    """The hold's DAE on a SealModel after pressurisation, with the front ``load`` of step 2."""
+
+    def __init__(self, model, u0, load, p_from, p_to, t_ramp, ve, t_end):
+        self.model, self.p_to = model, p_to
+        ves = ViscoelasticSolid(model, ve, t_end)
+        self.series, self.shift_of_t, self.shift = ves.series, ves.shift_of_t, ves.shift
+        self.classes = ves.classes
+        mesh = model.mesh
+        # the model's distributed mesh, with the Prony field on its cells
+        self.layout = lay = model.partition.numbering(prony=ves.prony_size)
+        assert np.array_equal(lay.udofs, model.udofs)  # vertices first: u0 maps as it is
+        X = mesh.X
+        self.solid, self.prony, H0 = ves.terms(lay, u0)
+        self.instantaneous = ves.instantaneous
+        # rod and groove at their final positions
+        self.rod = copy.copy(model.rod)
+        self.rod.r_rod = lambda t: model.r_rod_final
+        self.groove = copy.copy(model.groove)
+        self.groove.r_bottom = lambda t: model.r_g_final
+        self.load = PressureLoad(X, mesh.conn,
+                                 lambda t: p_from + (p_to - p_from) * ramp(t / t_ramp),
+                                 model.axisym, load.edges[load.start, 0], udofs=lay.udofs,
+                                 p_crit=load.p_crit)
+        self.load.set_reach(load.reach)
+        # serial start vector; each rank fills the internal variables of its own cells
+        self.U0 = np.zeros(lay.n)
+        self.U0[lay.udofs] = u0[model.udofs]
+        self.U0[lay.prony_dofs[lay.cells]] = H0
+        # the planar O-ring's rolling gauge too (frictionless, as steps 1-2)
+        self.gauge_terms = [model.gauge] if model.gauge is not None else []
+        terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge_terms,
+                                  dofs=lay, solid=self.solid)
+        terms.insert(1, self.prony)
+        terms += [model.rod_side_guard(lay.udofs, model.r_rod_final),
+                  RelaxedFront(self.load, self.node_contact_pressure, max_advance=1.0)]
+        fields = {"displacement": lay.field_dofs("displacement")}
+        if ves.prony_size:
+            fields["prony"] = lay.field_dofs("prony")
+        self.problem = model.problem(lay.n, terms, prefix="hold_", fields=fields, dofs=lay)
+
+    def node_contact_pressure(self, t, u):
+        return node_contact_pressure(self.model.mesh.X.shape[0], self.groove, self.rod, t, u)
+
+    def displacement(self, U):
+        """The displacement-only vector of the SealModel's numbering."""
+        return U[self.layout.udofs].ravel()
+
+    def run(self, t_end, dt0, rtol, stops=(), observers=()):
+        return self.problem.transient(self.U0, 0.0, t_end, dt0, stops=stops,
+                                      observers=observers, rtol=rtol, atol=1e-6)
+
+    def long_term_terms(self):
+        """The long-term (hyperelastic) problem's boundary terms at the final pressure: rod,
+        groove, a copy of the load held at p_to (and the gauge)."""
+        load = copy.copy(self.load)
+        load.pressure = lambda t: self.p_to
+        return [self.rod, self.groove, load] + self.gauge_terms

@@ -1,0 +1,282 @@
+"""The seal between a rigid rod and groove: mesh, material and walls as Problem terms.
+
+The steps of a procedure (:mod:`sealts.steps`) build their problems from it: mounting and
+pressurisation (paper Section 3.1.1, steps 1-2) move the rod and groove along the pseudo-time
+of :mod:`sealts.steps.pseudo_time`; the hold and the stroke (step 3) use the walls at their
+final radii. The model holds no history of a run: that is the :class:`sealts.steps.RunState`
+handed from step to step.
+"""
+import numpy as np
+
+from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
+                             tributary_lengths)
+from ..contact.rod_side_guard import RodSideGuard
+from ..mesh.partition import Partition
+from ..solid.stabilisation import ViscousStabilisation
+from ..solid.term import SolidTerm
+from .problem import Problem
+
+NEWTON_ATOL = 1e-9   # a seal's Newton solves converge to this fraction of its force scale
+
+
+def ramp(t):
+    """Smooth 0 -> 1 over t in [0, 1] (C1), then 1."""
+    s = min(max(t, 0.0), 1.0)
+    return s * s * (3.0 - 2.0 * s)
+
+
+class SealModel:
+    """Seal mesh + material + rod and groove, as Problem terms.
+
+    The mesh is distributed over ``comm`` (:class:`sealts.mesh.partition.Partition`): each
+    rank's ``solid`` covers its own cells, in its local dofs. ``rod``, ``groove``, ``stab``
+    (and a pressure load) are written in serial dofs and cover the whole boundary (mesh):
+    every rank evaluates them on the gathered state for outputs and front updates, and
+    rank 0 alone assembles the rod, groove and pressure terms (``local_terms``). The
+    stabilisation is assembled by each rank over the nodes it owns. Problems
+    (``problem``) run on the model's communicator.
+
+    ``hold_rolling``: hold the rolling angle with ``gauge`` (:mod:`sealts.solid.rolling`) in
+    steps 1-2 (and the hold); by default on a plane-strain section whose boundary is a
+    circle, which nothing else holds from rolling between frictionless walls."""
+
+    def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
+                 h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0,
+                 corner_radius=0.0, comm=None, hold_rolling=None):
+        from petsc4py import PETSc
+
+        from ..solid.pressure import boundary_loop
+        self.mesh, self.material, self.axisym = mesh, material, axisym
+        self.comm = comm = comm or PETSc.COMM_WORLD
+        X = mesh.X
+        root_nodes = np.union1d(mesh.boundary_nodes(), boundary_loop(mesh.conn).ravel())
+        self.partition = part = Partition(mesh, comm, root_nodes=root_nodes)
+        self.dofs = dofs = part.numbering()
+        self.n = dofs.n
+        udofs = self.udofs = dofs.udofs                        # serial
+        self.solid = SolidTerm(X, mesh.conn[part.cells], material, axisym,
+                               udofs=dofs.udofs_local, heating=ramp)
+        chain = mesh.chain("rod_side")
+        r_out = X[:, 0].max()
+        r_in = X[chain, 0].min()
+        self.r_rod_final = rod_radius
+        self.r_rod0 = min(rod_radius, r_in - 1e-3)          # clear of the seal at t = 0
+        self.r_g_final = groove_radius
+        self.r_g0 = max(groove_radius, r_out + 1e-3)
+        area = 2 * np.pi * rod_radius if axisym else depth
+        self.rod = RodContact(X, chain, self.rod_radius, area, h_mix, p_mix, udofs=udofs)
+        bnd = mesh.boundary_nodes()
+        trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
+        self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
+                                    lambda t: groove_walls, penalty=penalty, depth=depth,
+                                    corner_radius=corner_radius, udofs=udofs)
+        # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2);
+        # summed over the ranks' cells
+        mpi = comm.tompi4py()
+        vol = np.bincount(self.solid.conn.ravel(), np.repeat(self.solid.W.sum(1) / 4.0, 4),
+                          minlength=X.shape[0])
+        vol = mpi.allreduce(vol) if comm.getSize() > 1 else vol
+        self.stab = ViscousStabilisation(udofs.ravel(), np.repeat(vol, 2), stabilisation)
+        own = part.owned_nodes
+        self.stab_local = ViscousStabilisation(dofs.udofs_local[own].ravel(),
+                                               np.repeat(vol[own], 2), stabilisation)
+        # force scale G * cross-section * circumference (N); Newton converges to 1e-9 of it
+        volume = float(self.solid.W.sum())
+        volume = mpi.allreduce(volume) if comm.getSize() > 1 else volume
+        cross = volume / (2 * np.pi * X[:, 0].mean() if axisym else depth)
+        circ = 2 * np.pi * X[:, 0].mean() if axisym else depth
+        self.force_scale = material.shear_modulus * cross * circ
+        self._full_solid = None
+        # plane strain, round section: rolling is a free mode of steps 1-2, held by a pure
+        # couple of stiffness G A R^2 (sealts.solid.rolling); the same measure of the
+        # rolling angle, without the couple, for every model's messages
+        from ..solid.rolling import RollingGauge, gauge_nodes, is_round
+        loop = boundary_loop(mesh.conn)[:, 0]
+        nodes = gauge_nodes(X, loop)
+        r2 = float(((X[nodes] - X[nodes].mean(0)) ** 2).sum(1).mean())
+        self.roll = RollingGauge(X, nodes, udofs, material.shear_modulus * cross * r2)
+        if hold_rolling is None:
+            hold_rolling = is_round(X, loop)
+        self.gauge = self.roll if hold_rolling and not axisym else None
+        # boundary nodes the rod does not act on (only the rod side carries contact and film)
+        self.off_rod = np.setdiff1d(bnd, chain)
+
+    def local_terms(self, boundary, stab=False, dofs=None, solid=None):
+        """This rank's terms: its cells' solid, (its owned nodes' stabilisation), and on
+        rank 0 the ``boundary`` terms (serial dofs) on its local vector."""
+        dofs = dofs or self.dofs
+        out = [solid or self.solid] + dofs.on_root(boundary)
+        return out + [self.stab_local] if stab else out
+
+    def full_solid(self):
+        """The solid term over every cell in serial dofs (fields output, one rank)."""
+        if self._full_solid is None:
+            s = self.solid
+            self._full_solid = SolidTerm(self.mesh.X, self.mesh.conn, self.material,
+                                         self.axisym, udofs=self.udofs, heating=s.heating)
+        return self._full_solid
+
+    def rod_side_guard(self, udofs=None, r_rod=None):
+        """The post-step guard of :mod:`sealts.contact.rod_side_guard` for this seal: the
+        boundary nodes off the rod side may not pass h_mix into the rod. ``udofs``,
+        ``r_rod``: another layout's dofs (the stroke's) and rod radius (default the
+        model's, moving in steps 1-2)."""
+        udofs = self.udofs if udofs is None else udofs
+        r_rod = self.rod_radius if r_rod is None else r_rod
+
+        def note(u):
+            if self.axisym:
+                return ""
+            u_ser = np.zeros(self.n)
+            u_ser[self.udofs] = u[udofs]
+            roll = np.degrees(self.roll.angle(u_ser))
+            return (f"; the plane-strain section has rolled by {roll:.3g} degrees (without "
+                    "hoop strain only friction holds a round section from rolling)")
+
+        return RodSideGuard(self.mesh.X, self.off_rod, udofs, r_rod, self.rod.h_mix, note)
+
+    def problem(self, n, terms, **kw):
+        """A Problem of this seal's terms on its communicator: the basic line search (the
+        residual norm is a poor merit function for a near-incompressible solid, see
+        :class:`sealts.problem.Problem`) and Newton converged to NEWTON_ATOL of the force
+        scale. ``kw``: prefix, constraints, fields, dofs."""
+        return Problem(n, terms, comm=self.comm, linesearch="basic",
+                       snes_atol=NEWTON_ATOL * self.force_scale, **kw)
+
+    def walls(self):
+        """The boundary terms of steps 1-2: rod, groove (and the rolling gauge)."""
+        return [self.rod, self.groove] + ([self.gauge] if self.gauge is not None else [])
+
+    def rod_radius(self, t):
+        return self.r_rod0 + (self.r_rod_final - self.r_rod0) * ramp(t)
+
+    def groove_radius(self, t):
+        return self.r_g0 + (self.r_g_final - self.r_g0) * ramp(t)
+
+    def node_contact_pressure(self, t, u):
+        return node_contact_pressure(self.mesh.X.shape[0], self.groove, self.rod, t, u)
+
+    def pressure_load(self, pressure, p_crit):
+        """The fluid pressure ``pressure(t)`` (MPa) on the free surface, entering at the
+        pressure side's most exposed node, nothing wetted yet
+        (:class:`sealts.solid.pressure.PressureLoad`)."""
+        from ..solid.pressure import PressureLoad
+        chain_p = self.mesh.nodes("pressure_side")
+        start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
+        return PressureLoad(self.mesh.X, self.mesh.conn, pressure, self.axisym, start,
+                            udofs=self.udofs, p_crit=p_crit)
+
+    def pressure_resultant(self, load, t, u):
+        """Total (radial, axial) force of the fluid pressure on the seal (N)."""
+        F = load.forces(t, u)
+        return float(F[:, 0].sum() + F[:, 2].sum()), float(F[:, 1].sum() + F[:, 3].sum())
+
+    def contact_profile(self, t, u):
+        """Along the rod side, by z: current axial position y (mm), gap h, contact pressure."""
+        c = self.mesh.chain("rod_side")
+        y = self.mesh.X[c, 1] + u[self.udofs[c, 1]]
+        h = self.rod.gap(t, u)
+        p, _ = self.rod.pressure(t, u)
+        return y, h, p
+
+    def results(self, t, u, udot=None):
+        """The contact's key numbers at (t, u). ``udot``: the state's rate where the final
+        static solve of a quasi-static step failed (None: u is a static equilibrium); the
+        viscous stabilisation's share of the rod load is reported from it."""
+        y, h, p = self.contact_profile(t, u)
+        f_rod = self.rod.forces(t, u)
+        total = float(f_rod.sum())
+        circ = 2 * np.pi * self.r_rod_final if self.axisym else 1.0
+        touching = p > 0.0
+        width = float(y[touching].max() - y[touching].min()) if touching.sum() > 1 else 0.0
+        out = {
+            "contact_force_total": total,
+            "contact_force_per_length": total / circ,
+            "contact_width": width,
+            "p_contact_max": float(p.max()),
+            "y_at_p_contact_max": float(y[np.argmax(p)]),
+            "h_min": float(h.min()),
+            "groove_reactions": self.groove.reactions(t, u),
+        }
+        # the viscous stabilisation's force at the end, against the contact load it must not
+        # carry (zero when the final static solve succeeded)
+        stab = self.stab.forces(np.zeros(self.n) if udot is None else udot)
+        out["stabilisation_share"] = float(np.abs(stab).max()
+                                           / max(np.abs(f_rod).max(), 1e-300))
+        out["static_equilibrium"] = udot is None
+        if self.gauge is not None:
+            out["rolling_angle_deg"] = float(np.degrees(self.gauge.angle(u)))
+            out["rolling_gauge_torque"] = self.gauge.torque(u)
+        return out
+
+
+def model_from_scene(scene, comm=None):
+    """Mesh (cached) and SealModel for a ``model = "seal"`` scene, distributed over comm
+    (PETSc.COMM_WORLD by default)."""
+    from ..mesh.seal_mesh import ORing, RectangularRing, build_mesh
+    from ..solid.term import Hyperelastic
+    sl, gr, m, mat = scene.seal, scene.groove, scene.mesh, scene.material
+    z0 = 0.0  # the groove is centred on z = 0
+    if sl.shape == "file":
+        mesh = _file_mesh(sl.mesh_file, m.cache, scene.rod.radius, gr)
+    else:
+        if sl.shape == "oring":
+            shape = ORing(sl.d1, sl.d2, z0)
+        else:
+            shape = RectangularRing(0.5 * sl.inner_diameter,
+                                    0.5 * sl.inner_diameter + sl.height,
+                                    z0 - 0.5 * sl.width, z0 + 0.5 * sl.width)
+        mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache,
+                          mirror=m.symmetric)
+    material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)
+    return SealModel(mesh, material, scene.rod.radius, 0.5 * gr.diameter,
+                     (z0 - 0.5 * gr.width, z0 + 0.5 * gr.width),
+                     axisym=sl.symmetry == "axisymmetric", h_mix=scene.asperity.h_mix,
+                     p_mix=scene.asperity.p_mix, penalty=scene.mount.penalty,
+                     stabilisation=scene.mount.stabilisation,
+                     corner_radius=gr.corner_radius, comm=comm)
+
+
+def _file_mesh(path, cache, r_rod, groove):
+    """A user's mesh file, centred axially in the groove; its geometry checked against the
+    rod and groove like the built-in shapes' (one-line SceneError naming the file)."""
+    from dataclasses import replace
+
+    from ..mesh.mesh_file import MeshFileError, read_mesh_file
+    from ..scene import SceneError
+    try:
+        mesh = read_mesh_file(path, cache)
+    except MeshFileError as e:
+        raise SceneError(f"seal.mesh_file: {e}") from None
+    X = mesh.X.copy()
+    X[:, 1] -= 0.5 * (X[:, 1].min() + X[:, 1].max())
+    r_in, r_out, width = X[:, 0].min(), X[:, 0].max(), np.ptp(X[:, 1])
+    space = 0.5 * groove.diameter - r_rod
+    if width >= groove.width:
+        raise SceneError(f"seal.mesh_file: the seal is {width:g} mm wide, not narrower than "
+                         f"groove.width = {groove.width:g} mm")
+    if r_in <= 0.0 or r_out <= r_rod or r_in >= 0.5 * groove.diameter:
+        raise SceneError(f"seal.mesh_file: the seal (r = {r_in:g} .. {r_out:g} mm) does not "
+                         "lie between rod and groove bottom")
+    if r_out - r_in > 1.35 * space:
+        raise SceneError(f"seal.mesh_file: radial size {r_out - r_in:g} mm squeezed into "
+                         f"{space:g} mm (over 35 % squeeze) cannot be mounted")
+    return replace(mesh, X=X)
+
+
+def element_stresses(model, u, solid=None, prony=None):
+    """Element-mean Cauchy stress (rr, zz, tt, rz), von Mises and pressure (MPa) of the
+    long-term material (``model.full_solid()``), or of ``solid`` plus the Prony stress of
+    ``prony`` (:meth:`sealts.solid.viscoelastic.PronyTerm.viscous_cauchy`) at the state u
+    of their layout."""
+    from ..solid.neo_hooke import cauchy_stress
+    solid = model.full_solid() if solid is None else solid
+    f, P, p_el, _ = solid.state(u)
+    s = cauchy_stress(f.reshape(-1, 5), P.reshape(-1, 5), np.repeat(p_el, 4))
+    s = s.reshape(-1, 4, 4)
+    if prony is not None:
+        s = s + prony.viscous_cauchy(u)
+    s = s.mean(1)
+    rr, zz, tt, rz = s.T
+    mises = np.sqrt(0.5 * ((rr - zz) ** 2 + (zz - tt) ** 2 + (tt - rr) ** 2) + 3 * rz**2)
+    return s, mises, -(rr + zz + tt) / 3.0

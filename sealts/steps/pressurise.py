@@ -1,0 +1,57 @@
+"""Step 2 of the paper: the sealed pressure p_in on the wetted free surface.
+
+p_in ramps over one pseudo-time unit after the mount and holds for as long again
+(:mod:`sealts.steps.pseudo_time`), long-term material, frictionless (the film comes with
+the coupling). The pressure-penetration front (:mod:`sealts.solid.pressure`) advances after
+every accepted step (:class:`sealts.solid.pressure.AdvancingFront`, a post-step hook); then
+it is settled against the static equilibrium at p_in
+(:func:`sealts.steps.quasi_static.settle_front`).
+"""
+from ..problem.seal_model import ramp
+from ..solid.pressure import AdvancingFront
+from .base import Step
+from .quasi_static import RodProgress, quasi_static, settle_front
+
+
+class Pressurise(Step):
+    name = "pressurise"
+
+    @staticmethod
+    def load(state):
+        """The pressure load of the step: p_in ramped over the protocol's ramp, nothing
+        wetted yet."""
+        p_in, t0 = state.scene.fluid.p_in, state.protocol.pressurise[0]
+        return state.model.pressure_load(lambda t: p_in * ramp(t - t0),
+                                          state.scene.fluid.p_crit)
+
+    def run(self, state):
+        model, scene = state.model, state.scene
+        p_in, dt = scene.fluid.p_in, scene.mount.dt
+        mounted = state.results
+        state.say(f"mounted: rod force {mounted['contact_force_total']:.6g} N; pressurising "
+                  f"to {p_in:g} MPa", force=True)
+        t0, t_ramp, t1 = state.protocol.pressurise
+        load = self.load(state)
+        load.update(model.node_contact_pressure(t0, state.u), 0.0)
+        eq = quasi_static(model, [load], state.u, (t0, t_ramp, t1), dt,
+                          hooks=[AdvancingFront(load, model.node_contact_pressure)],
+                          observers=[RodProgress(model, state.say)])
+        eq, moved, updates = settle_front(model, load, eq, t1, dt)
+        state.u, state.udot, state.t, state.load = eq.u, eq.udot, t1, load
+        state.counters.add(eq.counters)
+        res = model.results(t1, eq.u, eq.udot)
+        res["mounted"] = mounted
+        res["pressure_force_radial"], res["pressure_force_axial"] = \
+            model.pressure_resultant(load, t1, eq.u)
+        res["wetted_boundary_fraction"] = float(load.wet.mean())
+        # edges (fractions summed) the front would still move from the final state: 0 when
+        # front and equilibrium agree
+        res["front_change_edges"], res["front_updates"] = moved, updates
+        state.results = res
+        if moved >= 1e-4:
+            state.say(f"warning: the pressure-penetration front did not settle in "
+                      f"{updates + 1} updates (one more would move it {moved:.3g} edges); "
+                      "try a larger fluid.p_crit", force=True)
+        y, h, p = model.contact_profile(t1, eq.u)
+        state.writer.profile(t1, {"y": y, "h": h, "p_contact": p},
+                             label=f"pressurised to {p_in:g} MPa, pseudo-time {t1:g}")

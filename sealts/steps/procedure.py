@@ -1,0 +1,122 @@
+"""A scene's run as a list of steps (docs/design.md).
+
+    seal:  [Mount, Pressurise (p_in != 0), Checkpoint] or [Restart],
+           then Hold (hold.p_end) or Stroke (stroke.velocity)
+    ihl:   [Mount, Pressurise (p_in != 0)] or [Restart], then Ihl
+    film:  [SteadyFilm] or [TransientFilm]
+
+``prepare`` runs steps 1-2 alone (tests, benchmarks); a sweep is ``prepare`` once, then a
+step 3 per operating point on a copy of its state. A new step is a file in this package and
+one line in ``steps_for``.
+"""
+import time
+
+from ..io.progress import Progress
+from ..io.fields import write_fields
+from ..problem.seal_model import model_from_scene
+from .checkpoint import Checkpoint
+from .film import SteadyFilm, TransientFilm
+from .hold import Hold
+from .ihl import Ihl
+from .mount import Mount
+from .pressurise import Pressurise
+from .restart import Restart
+from .state import RunState
+from .stroke import Stroke
+
+
+def steps_for(scene, command="run"):
+    """The steps of a scene (``command``: "run" or "ihl")."""
+    if scene.model == "film":
+        return [SteadyFilm() if scene.analysis.type == "steady" else TransientFilm()]
+    if scene.start.state:
+        steps = [Restart(scene.start.state)]
+    else:
+        steps = [Mount()] + ([Pressurise()] if scene.fluid.p_in != 0.0 else [])
+    if command == "ihl":
+        return steps + [Ihl()]
+    if not scene.start.state:
+        steps.append(Checkpoint())
+    if scene.hold.p_end != 0.0:
+        steps.append(Hold())
+    if scene.stroke.velocity != "none":
+        steps.append(Stroke())
+    return steps
+
+
+def new_state(scene, comm=None, writer=None, say=None):
+    """The state a run starts from: the scene's model (for a seal scene), no history."""
+    from petsc4py import PETSc
+    comm = comm or PETSc.COMM_WORLD
+    if writer is None:
+        from ..io.writer import NullWriter
+        writer = NullWriter()
+    say = say or Progress(comm, scene.output.progress)
+    model = model_from_scene(scene, comm) if scene.model == "seal" else None
+    return RunState(scene, model, writer, say, comm)
+
+
+def run_steps(steps, state):
+    """Run the steps in turn on ``state``; returns it."""
+    for step in steps:
+        step.run(state)
+        if step.name:
+            state.done.append(step.name)
+    return state
+
+
+def prepare(scene, comm=None, writer=None, say=None):
+    """Steps 1-2 of a seal scene (mounted, pressurised to fluid.p_in when it is set) or
+    the state they saved: the RunState with u, t and the front."""
+    state = new_state(scene, comm, writer, say)
+    steps = [s for s in steps_for(scene, "ihl") if not isinstance(s, Ihl)]
+    return run_steps(steps, state)
+
+
+def run_scene(scene, writer, comm, command="run", petsc_options=None):
+    """Run a scene's steps, write its fields (seal) and ``summary.json``; returns the
+    summary."""
+    from ..io.provenance import provenance
+    t_wall = time.perf_counter()
+    state = new_state(scene, comm, writer)
+    model = state.model
+    if model is not None:
+        cells = model.partition.cells_per_rank
+        state.say(f"mesh: {model.mesh.X.shape[0]} nodes, {model.mesh.conn.shape[0]} quads, "
+                  f"{model.n} unknowns" + (f"; cells per rank {cells}" if len(cells) > 1
+                                           else ""), force=True)
+    run_steps(steps_for(scene, command), state)
+    if model is not None and command == "run" and writer.root:
+        write_fields(str(writer.dir / "fields.xdmf"), model, state.u)
+    summary = _summary(state, command)
+    summary["wall_time_s"] = time.perf_counter() - t_wall
+    summary["provenance"] = provenance(scene, petsc_options or {})
+    writer.summary(summary)
+    return summary
+
+
+def _summary(state, command):
+    scene, c, model = state.scene, state.counters, state.model
+    counts = {"steps_accepted": c.steps, "steps_rejected": c.rejected,
+              "newton_iterations": c.newton, "linear_iterations": c.linear}
+    if command == "ihl":
+        return {"scene": scene.name, "source": scene.source, "analysis": "ihl",
+                "p_in": scene.fluid.p_in, "viscosity": scene.fluid.viscosity,
+                "ihl": state.parts["ihl"],
+                "units": {"length": "mm", "pressure": "MPa", "speed": "mm/s",
+                          "volume_per_mm_stroke": "mm^3/mm"}}
+    if model is None:
+        out = {"scene": scene.name, "source": scene.source, "analysis": scene.analysis.type,
+               "scheme": scene.film.scheme, "unknowns": int(state.u.size),
+               "ranks": state.comm.getSize(), **counts,
+               "residual_evaluations": c.residuals, "jacobian_evaluations": c.jacobians,
+               "results": state.results,
+               "units": {"length": "mm", "pressure": "MPa", "force": "N", "time": "s",
+                         "flow": "mm^3/s", "volume": "mm^3"}}
+        return {**out, **state.parts}
+    return {"scene": scene.name, "source": scene.source, "analysis": " + ".join(state.done),
+            "nodes": int(model.mesh.X.shape[0]), "elements": int(model.mesh.conn.shape[0]),
+            "unknowns": model.n, "ranks": state.comm.getSize(),
+            "cells_per_rank": model.partition.cells_per_rank, **counts,
+            "results": state.results,
+            "units": {"length": "mm", "pressure": "MPa", "force": "N"}, **state.parts}

@@ -1,0 +1,40 @@
+"""Steps 1-2 read back from an earlier run's ``state.h5`` (``[start] state``) instead of
+computed. The mesh and p_in must be the ones it was saved with (one-line SceneError
+otherwise); the run continues at the end of steps 1-2 (:mod:`sealts.steps.pseudo_time`)."""
+import numpy as np
+
+from ..problem.seal_model import ramp
+from .base import Step
+from .state import read_state
+
+
+class Restart(Step):
+    name = "restart"
+
+    def __init__(self, path):
+        self.path = path
+
+    def run(self, state):
+        from ..scene import SceneError
+        model, scene, path = state.model, state.scene, self.path
+        un, X, reach, attrs = read_state(path)
+        if X.shape != model.mesh.X.shape or not np.allclose(X, model.mesh.X, atol=1e-12):
+            raise SceneError(f"start.state: {path} was saved for another mesh "
+                             f"({X.shape[0]} nodes; this scene's has "
+                             f"{model.mesh.X.shape[0]})")
+        p_in = scene.fluid.p_in
+        if float(attrs.get("p_in", 0.0)) != p_in:
+            raise SceneError(f"start.state: {path} was pressurised to "
+                             f"{attrs.get('p_in'):g} MPa, not fluid.p_in = {p_in:g} MPa")
+        state.u = np.zeros(model.n)
+        state.u[model.udofs] = un
+        state.t = state.protocol.end(pressurised=p_in != 0.0)
+        if p_in != 0.0:
+            t0 = state.protocol.pressurise[0]
+            p_crit = float(attrs["p_crit"])
+            state.load = model.pressure_load(lambda t: p_in * ramp(t - t0), p_crit)
+            state.load.set_reach(reach)
+        state.udot = None
+        state.say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not "
+                  "repeated", force=True)
+        state.results = model.results(state.t, state.u)

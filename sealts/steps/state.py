@@ -1,0 +1,72 @@
+"""The state handed from step to step, and its file (``state.h5``).
+
+A scene's run is a list of steps (:mod:`sealts.steps.procedure`); each takes the
+:class:`RunState`, advances it and hands it on. What one step leaves for the next is here
+and nowhere else: the displacements u and where the run stands in (pseudo-)time t, the
+pressure-penetration front (``load``), the solvers' counters, and what the summary reports
+(``results``, the step blocks in ``parts``). The model holds no history of its own.
+
+``save`` writes the state of steps 1-2 as ``state.h5`` (the displacement per node, the mesh
+coordinates it belongs to, the front's reach; p_in, p_crit and t as attributes);
+:class:`Restart` reads it back in place of those steps.
+"""
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..core import Counters
+from .pseudo_time import PseudoTime
+
+
+@dataclass
+class RunState:
+    scene: object
+    model: object
+    writer: object
+    say: object                                  # sealts.io.progress.Progress
+    comm: object = None                          # the PETSc communicator of the run
+    u: np.ndarray | None = None                  # displacements, the model's numbering
+    t: float = 0.0                               # pseudo-time in steps 1-2, s in step 3
+    udot: np.ndarray | None = None               # rate of a state that is not static
+    load: object = None                          # the pressure-penetration front (step 2 on)
+    counters: Counters = field(default_factory=Counters)
+    results: dict = field(default_factory=dict)  # the contact's key numbers at the end
+    parts: dict = field(default_factory=dict)    # summary blocks of the steps: hold, stroke
+    done: list = field(default_factory=list)     # names of the steps run
+
+    @property
+    def pressurised(self):
+        return self.load is not None
+
+    @property
+    def protocol(self):
+        """The pseudo-time protocol of steps 1-2 for this scene."""
+        return PseudoTime(self.scene.mount.t_hold)
+
+    def save(self, path):
+        """Write the state (rank 0) as an HDF5 file, whole: a temporary file renamed into
+        place, so a reader never sees half a state."""
+        m = self.model
+        arrays = {"u": self.u[m.udofs], "X": m.mesh.X}
+        attrs = {"p_in": self.scene.fluid.p_in, "t": self.t, "scene": self.scene.name,
+                 "source": self.scene.source}
+        if self.load is not None:
+            arrays["front_reach"] = np.asarray(self.load.reach, float)
+            attrs["p_crit"] = self.load.p_crit
+        self.writer.state(arrays, attrs, name=path)
+
+
+def read_state(path):
+    """(u per node, X, front reach or None, attributes) of a state file; SceneError (one
+    line) where it is not one."""
+    import h5py
+
+    from ..scene import SceneError
+    try:
+        with h5py.File(path, "r") as f:
+            X, un = f["X"][()], f["u"][()]
+            reach = f["front_reach"][()] if "front_reach" in f else None
+            attrs = dict(f.attrs)
+    except (OSError, KeyError) as e:
+        raise SceneError(f"start.state: {path} is not a sealts state file ({e})") from None
+    return un, X, reach, attrs

@@ -1,0 +1,134 @@
+"""Step 3 with ``[stroke] velocity``: the transient stroke with the film
+(:class:`sealts.problem.stroke_problem.StrokeProblem`).
+
+Output, as observers of the stroke's run: a series row per accepted step (the forces, flows,
+volumes and gap of ``StrokeProblem.scalars``, with U' as the step's difference quotient,
+then the solver's counts); at t = 0, each of stroke.output_times and t_end the profiles
+(stroke_profiles.csv) and the fields (stroke_fields.xdmf/.h5, a time series: displacement
+and film pressure on nodes, the Cauchy stresses on cells, with the Prony part in a
+viscoelastic stroke). The cycle's integrals (``CycleIntegrals``): the friction work, the
+trapezoid of the power F v over the accepted steps, and the transport per stroke direction,
+the steps' V_out increments summed by the sign of v.
+"""
+import time
+
+import numpy as np
+
+from ..io.fields import FieldSeries
+from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
+from ..problem.seal_model import element_stresses
+from ..problem.stroke_problem import StrokeProblem
+from .base import Step
+
+
+class StrokeColumns:
+    """``StrokeProblem.scalars`` at each accepted state, U' from the previous one."""
+
+    def __init__(self, stroke):
+        self.stroke, self.last = stroke, None
+
+    def __call__(self, t, U, info, row):
+        Udot = None
+        if self.last is not None and t > self.last[0]:
+            Udot = (U - self.last[1]) / (t - self.last[0])
+        self.last = (t, U)
+        return self.stroke.scalars(t, U, Udot)
+
+
+class CycleIntegrals:
+    """Friction work (N mm) and transport per direction (mm^3) over the accepted steps,
+    from the columns before it (friction_total, v, V_out); adds no column."""
+
+    def __init__(self):
+        self.work, self.transport, self.last = 0.0, {1: 0.0, -1: 0.0}, None
+
+    def __call__(self, t, U, info, row):
+        if self.last is not None and t > self.last["t"]:
+            prev = self.last
+            # the power F v the rod spends dragging the seal's surface
+            self.work += 0.5 * (t - prev["t"]) * (prev["friction_total"] * prev["v"]
+                                                  + row["friction_total"] * row["v"])
+            way = 1 if prev["v"] + row["v"] > 0.0 else -1
+            self.transport[way] += row["V_out"] - prev["V_out"]
+        self.last = row
+        return {}
+
+
+def seal_fields(model, stroke):
+    """(point data, cell data) of the stroke's state U at t: displacement and film pressure
+    on nodes, the Cauchy stresses on cells (with the Prony part when viscoelastic)."""
+    lay, n_nodes = stroke.layout, model.mesh.X.shape[0]
+
+    def fields(t, U):
+        u = stroke.displacement(U)
+        disp = np.zeros((n_nodes, 3))
+        disp[:, :2] = u[model.udofs]
+        p = np.zeros(n_nodes)
+        p[lay.rod_nodes] = U[lay.film_dofs]          # none without the film
+        if stroke.viscoelastic is None:
+            sig, mises, pressure = element_stresses(model, u)
+        else:
+            sig, mises, pressure = element_stresses(model, U, stroke.solid, stroke.prony)
+        cells = {"von_mises": mises, "pressure": pressure, "sigma_rr": sig[:, 0],
+                 "sigma_zz": sig[:, 1], "sigma_tt": sig[:, 2], "sigma_rz": sig[:, 3]}
+        return {"displacement": disp, "film_pressure": p}, cells
+    return fields
+
+
+class Stroke(Step):
+    name = "stroke"
+
+    def run(self, state):
+        model, scene, say, writer = state.model, state.scene, state.say, state.writer
+        st = scene.stroke
+        t_wall = time.perf_counter()
+        stroke = StrokeProblem(model, state.u, scene, state.load)
+        if stroke.viscoelastic:
+            ves = stroke.viscoelastic
+            say(ves.classes.describe(ves.series, ves.shift), force=True)
+        say(f"stroke: {st.velocity} v(t), v_max = {st.v_max:g} mm/s, to t = {st.t_end:g} s; "
+            f"{stroke.n} unknowns ({stroke.layout.film_dofs.size} film pressures, "
+            f"{scene.film.scheme + ' film' if stroke.film is not None else 'dry'})",
+            force=True)
+        U = stroke.start()
+        s0 = stroke.scalars(0.0, U)
+        say(f"stroke start: film load {s0['load_fluid']:.5g} N, asperity load "
+            f"{s0['load_asperity']:.5g} N, Q_out = {s0['Q_out']:.4g} mm^3/s", force=True)
+        integrals = CycleIntegrals()
+        line = StepLine("stroke step", [("v", "v", 1.0, "mm/s"), ("Newton", "newton", 1, ""),
+                                        ("min h", "h_min", 1e3, "um")])
+        series = Series(writer, [StrokeColumns(stroke), solver_columns, integrals], say, line)
+        wanted = sorted(set(st.output_times) | {0.0, st.t_end})
+        fields = Fields(FieldSeries(writer.dir / "stroke_fields.xdmf", model.mesh.X,
+                                    model.mesh.conn, writer.root),
+                        seal_fields(model, stroke), wanted)
+        outputs = [Profiles(writer, stroke.profile, "stroke_profiles.csv", wanted), fields]
+        for obs in outputs:
+            obs.stop(0.0, U)
+        try:
+            U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, [series] + outputs)
+        finally:
+            fields.close()
+        rows = series.rows
+        v = np.array([r["v"] for r in rows])
+        F = np.array([r["friction_total"] for r in rows])
+        c = stroke.problem.counters
+        state.parts["stroke"] = {
+            "velocity": st.velocity, "v_max": st.v_max, "t_end": st.t_end,
+            "film": stroke.film is not None,
+            "film_scheme": scene.film.scheme if stroke.film is not None else "none",
+            "unknowns": int(stroke.n),
+            "leakage_in": rows[-1]["V_in"], "leakage_out": rows[-1]["V_out"],
+            "outstroke_transport": integrals.transport[1],
+            "instroke_transport": integrals.transport[-1],
+            "peak_friction_outstroke": float(np.abs(F[v > 0]).max()) if (v > 0).any() else 0.0,
+            "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
+            "friction_work": integrals.work,
+            "h_min": float(min(r["h_min"] for r in rows)),
+            "steps_accepted": c.steps, "steps_rejected": c.rejected,
+            "newton_iterations": c.newton, "linear_iterations": c.linear,
+            "wall_time_s": time.perf_counter() - t_wall,
+            "units": {"volume": "mm^3", "force": "N", "work": "N mm"},
+        }
+        state.u, state.t = stroke.displacement(U), st.t_end
+        state.counters.add(c)
