@@ -31,6 +31,14 @@ def sealts(*args, cwd=None):
      "analysis.output_times has 2 s after analysis.t_end = 1 s"),
     ("fluid = 3", "fluid must be a table (got 3)"),
     ("[fluid\n", "not valid TOML"),
+    # a section the model never reads, one each way, named with the model it belongs to
+    ("[stroke]\nvelocity = 'sine'", "[stroke] is not read by a model = 'film' scene; it "
+                                   "belongs to model = 'seal'"),
+    ("[seal]\nd2 = 5.33", "[seal] is not read by a model = 'film' scene"),
+    ("model = 'seal'\n[gap]\nlength = 3.0", "[gap] is not read by a model = 'seal' scene; "
+                                            "it belongs to model = 'film'"),
+    ("model = 'seal'\n[analysis]\ntype = 'steady'", "[analysis] is not read by a model = "
+                                                   "'seal' scene"),
 ])
 def test_bad_scene_names_the_key(text, message):
     with pytest.raises(SceneError) as e:

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 
-from ..film.flow_factors import PATIR_CHENG_GAMMAS, read_table, tabulated_gamma
+from ..film.flow_factor_tables import PATIR_CHENG_GAMMAS, read_table, tabulated_gamma
 from .errors import SceneError
 from .spec import build, option
 
@@ -276,7 +276,7 @@ def _check_seal_geometry(s, base):
         if s.mesh.symmetric:
             raise SceneError("mesh.symmetric = true needs a built-in seal.shape ('oring' or "
                              "'rectangle'); a mesh file is used as it is")
-        return   # the rest is checked on the mesh itself (sealts.problem.seal_run)
+        return   # the rest is checked on the mesh itself (sealts.problem.seal_model)
     if sl.mesh_file:
         raise SceneError(f"seal.mesh_file is only used with seal.shape = 'file' "
                          f"(shape is {sl.shape!r})")
@@ -427,12 +427,30 @@ def parse_scene(text, source="<string>", base=None):
     return scene_from_table(table, source, base)
 
 
+# the sections each model reads (the top-level keys name, description, model, petsc too)
+SECTIONS = {
+    "film": {"analysis", "gap", "fluid", "rod", "film", "asperity", "output"},
+    "seal": {"fluid", "rod", "film", "asperity", "seal", "groove", "material", "mesh",
+             "mount", "viscoelastic", "hold", "stroke", "start", "output"},
+}
+
+
+def _check_sections(scene, table):
+    """A section the scene's model never reads is an error, not silently ignored."""
+    tables = {k for k, v in table.items() if isinstance(v, dict)}
+    for sec in sorted(tables - SECTIONS[scene.model]):
+        other = next(m for m in SECTIONS if m != scene.model)
+        hint = (f"; it belongs to model = '{other}'" if sec in SECTIONS[other] else "")
+        raise SceneError(f"[{sec}] is not read by a model = '{scene.model}' scene{hint}")
+
+
 def scene_from_table(table, source="<table>", base=None):
     """Validate an already parsed TOML table (a dict) into a Scene."""
     table = dict(table)
     petsc = _check_petsc(table.pop("petsc", {}))
     table.pop("source", None)
     scene = build(Scene, table)
+    _check_sections(scene, table)
     base = Path(base) if base is not None else Path.cwd()
     _check_consistency(scene, base)
 
