@@ -41,10 +41,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from sealts.film.ihl import ihl_film, ihl_flow  # noqa: E402
 from sealts.io.metrics import (asperity_share, at_end, band_core, contact_band,  # noqa: E402
                                cumulative_volume, film_change, film_metrics, flow_film,
-                               ihl_film, ihl_flow, in_band, inlet_nodes, inlet_span, ripple,
-                               steady_change)
+                               in_band, inlet_nodes, inlet_span, ripple, steady_change)
 from sealts.io.results import MissingOutput, Results  # noqa: E402
 
 MESHES = {"default": (0.025, 0.2), "coarse": (0.1, 0.4)}

@@ -7,6 +7,7 @@ import sys
 import numpy as np
 import pytest
 
+from sealts.film import ihl
 from sealts.io import metrics
 from sealts.io.results import MissingOutput, Results, read_fields, read_profiles, read_series
 
@@ -247,11 +248,11 @@ def test_ihl_film_inverts_the_reynolds_gradient():
     p = np.ones_like(y)
     k = int(np.argmax(g))
     y_w = 0.5 * (y[k] + y[k + 1])
-    assert np.allclose(metrics.ihl_film(y, p, g, v, h_star, y_w, ETA), h, rtol=1e-9)
-    back = metrics.ihl_film(-y[::-1], p, -g[::-1], -v, h_star, -y_w, ETA)
+    assert np.allclose(ihl.ihl_film(y, p, g, v, h_star, y_w, ETA), h, rtol=1e-9)
+    back = ihl.ihl_film(-y[::-1], p, -g[::-1], -v, h_star, -y_w, ETA)
     assert np.allclose(back, h[::-1], rtol=1e-9)
     p[0] = 0.0
-    assert np.isnan(metrics.ihl_film(y, p, g, v, h_star, y_w, ETA)[0])
+    assert np.isnan(ihl.ihl_film(y, p, g, v, h_star, y_w, ETA)[0])
 
 
 def test_ihl_film_at_the_steepest_rise_is_three_halves_h_star():
@@ -262,9 +263,9 @@ def test_ihl_film_at_the_steepest_rise_is_three_halves_h_star():
     p = 2.0 * np.clip(1.0 - y**2, 0.0, None) ** 1.5
     est = inverse_film(y, p, ETA, 100.0)
     k = int(np.argmin(np.abs(y - est["y_w"])))
-    h = metrics.ihl_film(y, p, pressure_gradient(y, p), 100.0, est["h_star"], est["y_w"], ETA)
+    h = ihl.ihl_film(y, p, pressure_gradient(y, p), 100.0, est["h_star"], est["y_w"], ETA)
     assert h[k] == pytest.approx(1.5 * est["h_star"], rel=1e-6)
-    steeper = metrics.ihl_film(y[k:k + 1], [1.0], [2 * est["w"]], 100.0, est["h_star"], 0.0, ETA)
+    steeper = ihl.ihl_film(y[k:k + 1], [1.0], [2 * est["w"]], 100.0, est["h_star"], 0.0, ETA)
     assert steeper[0] == 1.5 * est["h_star"]
 
 
@@ -287,8 +288,8 @@ def test_ihl_flow_over_a_sine_cycle_against_its_integral():
     area, V, T, h_out, h_in = 2 * np.pi * 25.0, 500.0, 10.0, 8e-4, 7e-4
     t = np.linspace(0.0, T, 200001)
     v = V * np.sin(2 * np.pi * t / T)
-    q = metrics.ihl_flow(v, h_out, h_in, V, area)
-    assert metrics.ihl_flow(V, h_out, h_in, V, area) == pytest.approx(0.5 * area * V * h_out)
+    q = ihl.ihl_flow(v, h_out, h_in, V, area)
+    assert ihl.ihl_flow(V, h_out, h_in, V, area) == pytest.approx(0.5 * area * V * h_out)
     half = area * V / (2 * (2 * np.pi / T)) * math.sqrt(math.pi) * math.gamma(1.25) / math.gamma(1.75)
     vol = metrics.cumulative_volume(t, q)
     assert vol[t.size // 2] == pytest.approx(half * h_out, rel=1e-6)

@@ -17,7 +17,8 @@ The rod leaves the contact with a film of thickness h*/2 (the flow q at rod spee
 stroke of length L carries the volume A L h*/2 through the seal (A = 2 pi r_rod): outward on
 the outstroke (v > 0, from the pressurised side to the atmosphere) and back on the instroke.
 The net leakage per cycle is A L (h*_out - h*_in)/2; a seal whose instroke film is the
-thicker one brings back all it let out.
+thicker one brings back all it let out. ``ihl_film`` gives the whole film along the contact,
+``ihl_flow`` the flow over a stroke cycle.
 """
 import numpy as np
 
@@ -53,3 +54,37 @@ def ihl_estimate(y, p, eta, speed, area):
     return {"speed": abs(speed), "outstroke": out, "instroke": back,
             "volume_out_per_mm_stroke": v_out, "volume_in_per_mm_stroke": v_in,
             "net_leakage_per_mm_stroke": v_out - v_in}
+
+
+def ihl_film(y, p, dpdy, v, h_star, y_w, eta):
+    """The IHL film (mm) along the contact, Blok's construction (module docstring):
+    where p > 0, h solves 6 eta v (h - h*) / h^3 = dp/dy. Where the pressure rises along the
+    motion two films do: the thick one up to the steepest rise y_w, the thin one after it;
+    where it falls, h < h*. At a node steeper than the steepest rise (possible only
+    discretely) h = 3 h*/2, the film there. NaN where p <= 0 (no contact)."""
+    s = np.sign(v)
+    g = s * np.asarray(dpdy) / (6.0 * eta * abs(v))
+    along, along_w = s * np.asarray(y), s * y_w
+    h = np.full(len(y), np.nan)
+    for i in np.nonzero(np.asarray(p) > 0.0)[0]:
+        if abs(g[i]) < 1e-30:
+            h[i] = h_star
+            continue
+        r = np.roots([g[i], 0.0, -1.0, h_star])
+        r = np.sort(r[(np.abs(r.imag) < 1e-12 * h_star) & (r.real > 0.0)].real)
+        if r.size == 0:
+            h[i] = 1.5 * h_star
+        elif g[i] < 0.0 or r.size == 1:
+            h[i] = r[0]
+        else:
+            h[i] = r[-1] if along[i] < along_w else r[0]
+    return h
+
+
+def ihl_flow(v, h_out, h_in, speed, area):
+    """The IHL flow (mm^3/s) at rod speeds v: area v h*(v) / 2, with the outstroke film
+    h_out for v >= 0 and the instroke film h_in for v < 0, both IHL films at ``speed`` and
+    scaled as h* ~ sqrt(|v|) (h* = sqrt(8 eta |v| / (9 w)), w fixed by the dry profile)."""
+    v = np.asarray(v, float)
+    h = np.where(v >= 0.0, h_out, h_in) * np.sqrt(np.abs(v) / speed)
+    return 0.5 * area * v * h

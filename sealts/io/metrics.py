@@ -1,6 +1,6 @@
 """Numbers read off a seal run's output: the contact band, film statistics over it, ripple
-and steadiness of the film, the film that carries a flow, and the inverse-hydrodynamic (IHL)
-film and flow that go beside it.
+and steadiness of the film, the film that carries a flow, and where an IHL estimate's inlet
+lies (the IHL film and flow themselves are :mod:`sealts.film.ihl`).
 
 A *profile* is one output time of a profile CSV as :func:`sealts.io.results.read_profiles`
 returns it with ``sort_by="y"``: arrays along the rod side, y ascending: y, h (mm), p,
@@ -102,31 +102,6 @@ def flow_film(q, v, area):
     return 2.0 * np.asarray(q) / (area * np.asarray(v))
 
 
-def ihl_film(y, p, dpdy, v, h_star, y_w, eta):
-    """The IHL film (mm) along the contact, Blok's construction (:mod:`sealts.film.ihl`):
-    where p > 0, h solves 6 eta v (h - h*) / h^3 = dp/dy. Where the pressure rises along the
-    motion two films do: the thick one up to the steepest rise y_w, the thin one after it;
-    where it falls, h < h*. At a node steeper than the steepest rise (possible only
-    discretely) h = 3 h*/2, the film there. NaN where p <= 0 (no contact)."""
-    s = np.sign(v)
-    g = s * np.asarray(dpdy) / (6.0 * eta * abs(v))
-    along, along_w = s * np.asarray(y), s * y_w
-    h = np.full(len(y), np.nan)
-    for i in np.nonzero(np.asarray(p) > 0.0)[0]:
-        if abs(g[i]) < 1e-30:
-            h[i] = h_star
-            continue
-        r = np.roots([g[i], 0.0, -1.0, h_star])
-        r = np.sort(r[(np.abs(r.imag) < 1e-12 * h_star) & (r.real > 0.0)].real)
-        if r.size == 0:
-            h[i] = 1.5 * h_star
-        elif g[i] < 0.0 or r.size == 1:
-            h[i] = r[0]
-        else:
-            h[i] = r[-1] if along[i] < along_w else r[0]
-    return h
-
-
 def inlet_nodes(ip, y_w, v):
     """(i0, iw): indices in an IHL profile ``ip`` (y ascending, p_contact) of the first node
     in contact along the motion (sign of v) and of the node nearest its steepest rise y_w."""
@@ -144,15 +119,6 @@ def inlet_span(ip, y_w, v):
     resolve the inlet, where the film forms."""
     i0, iw = inlet_nodes(ip, y_w, v)
     return int(np.sign(v)) * (iw - i0) + 1
-
-
-def ihl_flow(v, h_out, h_in, speed, area):
-    """The IHL flow (mm^3/s) at rod speeds v: area v h*(v) / 2, with the outstroke film
-    h_out for v >= 0 and the instroke film h_in for v < 0, both IHL films at ``speed`` and
-    scaled as h* ~ sqrt(|v|) (h* = sqrt(8 eta |v| / (9 w)), w fixed by the dry profile)."""
-    v = np.asarray(v, float)
-    h = np.where(v >= 0.0, h_out, h_in) * np.sqrt(np.abs(v) / speed)
-    return 0.5 * area * v * h
 
 
 def cumulative_volume(t, q):
