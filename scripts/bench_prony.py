@@ -64,7 +64,7 @@ def bench_oring(tols, t_end):
 
     import tomllib
 
-    from sealts.io.observers import Recorder
+    from sealts.core import Recorder
 
     from sealts.problem.hold_problem import HoldProblem
     from sealts.scene.schema import scene_from_table

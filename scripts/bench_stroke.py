@@ -31,7 +31,7 @@ def scene(h_contact, h_bulk, viscoelastic):
 
 
 def stroke(state, s, rtol):
-    from sealts.io.observers import Recorder
+    from sealts.core import Recorder
 
     from sealts.problem.stroke_problem import StrokeProblem
     s = replace(s, stroke=replace(s.stroke, rtol=rtol))

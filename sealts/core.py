@@ -21,6 +21,10 @@ def of_time(x):
     return x if callable(x) else (lambda t, x=float(x): x)
 
 
+_NONE = np.zeros(0, np.int64)
+_NONE.setflags(write=False)       # shared by every term without rows: never written
+
+
 class Term:
     """A physics term of the DAE F(t, U, U') = sum_terms F_term = 0.
 
@@ -33,8 +37,7 @@ class Term:
       ends the run with its message.
     """
 
-    rows = np.zeros(0, np.int64)
-    cols = np.zeros(0, np.int64)
+    rows = cols = _NONE
 
     def add_residual(self, t, u, udot, f):
         pass
@@ -89,13 +92,36 @@ class StepInfo:
 
 
 class Observer:
-    """An output attached to a Problem's post-step (docs/design.md, "Observers"): after the
-    terms' hooks, ``accepted(t, u, info)`` sees every accepted state (and the start), u full
-    and in serial order; ``stop(t, u)`` the states at the run's stop times (output times
-    and the end). Both do nothing by default."""
+    """An output attached to a Problem's run (docs/design.md, "Observers"): ``start(t, u)``
+    sees the initial state; after the terms' hooks, ``accepted(t, u, info)`` every accepted
+    state (and the start), u full and in serial order; ``stop(t, u)`` the states at the
+    run's stop times (output times and the end); ``close()`` runs when the run ends, also
+    when it fails. All do nothing by default."""
+
+    def start(self, t, u):
+        pass
 
     def accepted(self, t, u, info):
         pass
 
     def stop(self, t, u):
         pass
+
+    def close(self):
+        pass
+
+
+class Recorder(Observer):
+    """Every accepted state (t, u) in ``states`` and the stop states in ``stops``, in
+    memory (tests, scripts); ``call(t, u)`` on each accepted state too, if given."""
+
+    def __init__(self, call=None):
+        self.states, self.stops, self.call = [], [], call
+
+    def accepted(self, t, u, info):
+        self.states.append((t, u))
+        if self.call is not None:
+            self.call(t, u)
+
+    def stop(self, t, u):
+        self.stops.append((t, u))

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from sealts.io.observers import Recorder  # noqa: F401  (tests import it from here)
+from sealts.core import Recorder  # noqa: F401  (tests import it from here)
 
 ROOT = Path(__file__).resolve().parents[1]
 CONFIGS = ROOT / "configs"

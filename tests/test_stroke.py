@@ -89,10 +89,10 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     f = vstep.problem.residual(0.0, V0, np.zeros_like(V0))
     assert np.abs(f[vlay.prony_dofs]).max() < 1e-9 * model.force_scale
     assert np.abs(f[vlay.udofs]).max() < 10 * 1e-9 * model.force_scale
-    from sealts.problem.seal_model import element_stresses
-    long_term = element_stresses(model, vstep.displacement(V0))[0]
-    relaxed = element_stresses(model, V0, vstep.solid, vstep.prony)[0]
-    elastic_only = element_stresses(model, V0, vstep.solid)[0]
+    from sealts.solid.stresses import element_stresses
+    long_term = element_stresses(model.full_solid(), vstep.displacement(V0))[0]
+    relaxed = element_stresses(vstep.solid, V0, vstep.prony)[0]
+    elastic_only = element_stresses(vstep.solid, V0)[0]
     big = np.abs(long_term).max()
     assert np.abs(relaxed - long_term).max() < 1e-9 * big
     assert np.abs(elastic_only - long_term).max() > 0.1 * big     # the Prony part matters
@@ -141,6 +141,7 @@ def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "restarted from" in r.stdout
     assert b["analysis"] == "restart + stroke"
+    assert b["results"] == a["results"]           # steps 1-2's results come with the state
     for key in ("leakage_out", "leakage_in", "peak_friction_outstroke", "h_min"):
         assert b["stroke"][key] == pytest.approx(a["stroke"][key], rel=1e-9, abs=1e-12)
     assert b["stroke"]["steps_accepted"] == a["stroke"]["steps_accepted"]

@@ -80,15 +80,14 @@ def write_fields(path, model, u):
     cells, on the reference mesh (apply ParaView's 'Warp By Vector' to see the deformation)."""
     import meshio
 
-    from ..problem.seal_model import element_stresses
-    s, mises, pressure = element_stresses(model, u)
+    from ..solid.stresses import stress_cells
+    cells = stress_cells(model.full_solid(), u)
     disp = np.zeros((model.mesh.X.shape[0], 3))
     disp[:, :2] = u[model.udofs]
     points = np.zeros((model.mesh.X.shape[0], 3))
     points[:, :2] = model.mesh.X
     meshio.write(path, meshio.Mesh(
         points, [("quad", model.mesh.conn)], point_data={"displacement": disp},
-        cell_data={"von_mises": [mises], "pressure": [pressure], "sigma_rr": [s[:, 0]],
-                   "sigma_zz": [s[:, 1]], "sigma_tt": [s[:, 2]], "sigma_rz": [s[:, 3]]}))
+        cell_data={k: [v] for k, v in cells.items()}))
 
 

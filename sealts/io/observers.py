@@ -1,8 +1,8 @@
 """Outputs as observers of a Problem's post-step (:class:`sealts.core.Observer`).
 
 A step attaches the observers it wants to its problem's run: a series row per accepted step
-built from column sources, a progress line, profiles and fields at the output times. A new
-output is one observer; a new series column is one source (a callable
+built from column sources, a progress line, profiles and fields at the output times (``Recorder``, in memory, is
+:class:`sealts.core.Recorder`). A new output is one observer; a new series column is one source (a callable
 ``source(t, u, info, row) -> dict`` that sees the columns before it) in a step's list.
 """
 from ..core import Observer
@@ -18,6 +18,8 @@ class Series(Observer):
     columns in turn. ``line(row, info)``: a progress line printed through ``say``."""
 
     def __init__(self, writer, sources, say=None, line=None):
+        if (say is None) != (line is None):
+            raise ValueError("a progress line needs both say and line")
         self.writer, self.sources = writer, list(sources)
         self.say, self.line = say, line
         self.rows = []
@@ -42,7 +44,7 @@ class StepLine:
     def __call__(self, row, info):
         extra = "".join(f"  {name} = {row[key] * scale:.4g}{' ' + unit if unit else ''}"
                         for name, key, scale, unit in self.columns)
-        return (f"{self.label} {info.step:5d}  t = {row['t']:.5g} s  dt = {row['dt']:.3g} s"
+        return (f"{self.label} {info.step:5d}  t = {row['t']:.5g} s  dt = {info.dt:.3g} s"
                 + extra)
 
 
@@ -51,24 +53,18 @@ def solver_columns(t, u, info, row):
     return {"dt": info.dt, "newton": info.newton}
 
 
-class ProgressLine(Observer):
-    """A progress line per accepted step (throttled): ``line(t, u, info) -> str``."""
-
-    def __init__(self, say, line):
-        self.say, self.line = say, line
-
-    def accepted(self, t, u, info):
-        if self.say.due():
-            self.say(self.line(t, u, info))
-
-
 class Profiles(Observer):
-    """Profiles along y at the stop times (only those in ``times``, if given) into the long
-    CSV file ``name``: ``profile(t, u) -> dict of arrays``."""
+    """Profiles along y at the stop times (only those in ``times``, if given, and then at
+    the start too if it is one of them) into the long CSV file ``name``:
+    ``profile(t, u) -> dict of arrays``."""
 
     def __init__(self, writer, profile, name="profiles.csv", times=None, say=None):
         self.writer, self.profile, self.name, self.times = writer, profile, name, times
         self.say = say
+
+    def start(self, t, u):
+        if self.times is not None:
+            self.stop(t, u)
 
     def stop(self, t, u):
         if at_times(self.times, t):
@@ -78,12 +74,15 @@ class Profiles(Observer):
 
 
 class Fields(Observer):
-    """Fields on the seal's mesh at the stop times in ``times`` into one XDMF + HDF5 time
-    series (:class:`sealts.io.fields.FieldSeries`): ``fields(t, u) -> (point_data,
-    cell_data)``. ``close()`` when the run ends."""
+    """Fields on the seal's mesh at the start and the stop times in ``times`` into one XDMF
+    + HDF5 time series (:class:`sealts.io.fields.FieldSeries`): ``fields(t, u) ->
+    (point_data, cell_data)``."""
 
-    def __init__(self, series, fields, times=None):
+    def __init__(self, series, fields, times):
         self.series, self.fields, self.times = series, fields, times
+
+    def start(self, t, u):
+        self.stop(t, u)
 
     def stop(self, t, u):
         if at_times(self.times, t) and self.series.root:
@@ -91,19 +90,3 @@ class Fields(Observer):
 
     def close(self):
         self.series.close()
-
-
-class Recorder(Observer):
-    """Every accepted state (t, u) in ``states`` and the stop states in ``stops``, in
-    memory (tests, scripts); ``call(t, u)`` on each accepted state too, if given."""
-
-    def __init__(self, call=None):
-        self.states, self.stops, self.call = [], [], call
-
-    def accepted(self, t, u, info):
-        self.states.append((t, u))
-        if self.call is not None:
-            self.call(t, u)
-
-    def stop(self, t, u):
-        self.stops.append((t, u))

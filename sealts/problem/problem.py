@@ -44,6 +44,27 @@ from petsc4py import PETSc
 from ..core import Counters, SolveError, StepInfo
 
 
+# the solvers in force, by options prefix, as set up last in this process (for the summary)
+SOLVERS = {}
+
+
+def _solver_in_force(snes, ts=None):
+    """The types and tolerances a solver ended up with, after setFromOptions."""
+    ksp = snes.getKSP()
+    pc = ksp.getPC()
+    rtol, atol, stol, max_it = snes.getTolerances()
+    out = {"snes_type": snes.getType(), "snes_linesearch_type": snes.getLineSearch().getType(),
+           "snes_rtol": rtol, "snes_atol": atol, "snes_stol": stol, "snes_max_it": max_it,
+           "ksp_type": ksp.getType(), "pc_type": pc.getType()}
+    if pc.getType() in (PETSc.PC.Type.LU, PETSc.PC.Type.CHOLESKY):
+        out["pc_factor_mat_solver_type"] = pc.getFactorSolverType()
+    if ts is not None:
+        ts_rtol, ts_atol = ts.getTolerances()
+        out.update(ts_type=ts.getType(), ts_rtol=ts_rtol,
+                   ts_atol=ts_atol if np.isscalar(ts_atol) else "per unknown")
+    return out
+
+
 class Problem:
     """A DAE assembled from terms, solved with PETSc TS (transient) or SNES (steady)."""
 
@@ -297,6 +318,7 @@ class Problem:
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
         self._set_splits(snes.getKSP())
+        SOLVERS[self.prefix or ""] = _solver_in_force(snes)
         return snes
 
     def make_ts(self, t0, t_end, dt0, monitor=None, rtol=1e-6, atol=1e-8):
@@ -331,6 +353,7 @@ class Problem:
         ts.setFromOptions()
         self._drop_defaults()
         self._set_splits(ts.getSNES().getKSP())
+        SOLVERS[self.prefix or ""] = _solver_in_force(ts.getSNES(), ts)
         return ts
 
     def accepted(self, t, u):
@@ -369,7 +392,8 @@ class Problem:
         After every accepted step (and at t0) each term's post-step hook ``accepted(t, u)``
         runs, then each observer's ``accepted(t, u, info)`` (:class:`sealts.core.Observer`);
         a SolveError either raises ends the run with its own message. ``observer.stop(t, u)``
-        runs at each time in ``stops`` (hit exactly) and at t_end. ``atol``: a number, or one
+        runs at each time in ``stops`` (hit exactly) and at t_end; ``start`` before the first
+        step, ``close`` when the run ends or fails. ``atol``: a number, or one
         per unknown (full, serial order; a huge one leaves that unknown out of the local
         error estimate).
         """
@@ -396,6 +420,9 @@ class Problem:
         X = self._owned(u0)
         targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
         try:
+            u = np.array(u0, float)
+            for obs in observers:
+                obs.start(t0, u)
             for target in targets:
                 ts.setMaxTime(target)
                 try:
@@ -420,8 +447,9 @@ class Problem:
             c.rejected += ts.getStepRejections()
             c.newton += ts.getSNESIterations()
             c.linear += ts.getKSPIterations()
-        u = self.gather(X).copy()
-        ts.destroy()
+            ts.destroy()
+            for obs in observers:
+                obs.close()
         return u
 
 

@@ -9,8 +9,7 @@ elastic modulus and frozen ones dropped (from a virgin state their H stays 0), a
 """
 import numpy as np
 
-from ..core import Constraints
-from ..io.observers import Recorder
+from ..core import Constraints, Recorder
 from ..problem import Problem
 from .term import NeoHooke, SolidTerm
 from .viscoelastic import PronyTerm, iso_stress

@@ -45,11 +45,11 @@ class TransientFilm(Step):
         u0 = model.initial_state(0.0)
         u0[:model.scheme.size] = u_film[:model.scheme.size]
         problem = Problem(model.n, [model.term], comm=state.comm)
-        writer.profile(0.0, model.profile(0.0, u0))
         state.parts["results_t0"] = model.scalars(0.0, u0)
+        times = [0.0, *a.output_times, a.t_end]
         line = StepLine("step", [("Newton", "newton", 1, ""), ("min h", "h_min", 1e3, "um")])
         observers = [Series(writer, [FilmColumns(model)], state.say, line),
-                     Profiles(writer, model.profile, say=state.say)]
+                     Profiles(writer, model.profile, times=times, say=state.say)]
         u = problem.transient(u0, 0.0, a.t_end, a.dt, a.output_times, observers)
         state.u, state.t, state.results = u, a.t_end, model.scalars(a.t_end, u)
         state.counters.add(problem.counters).add(pre.counters)

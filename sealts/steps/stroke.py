@@ -16,8 +16,8 @@ import numpy as np
 
 from ..io.fields import FieldSeries
 from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
-from ..problem.seal_model import element_stresses
 from ..problem.stroke_problem import StrokeProblem
+from ..solid.stresses import stress_cells
 from .base import Step
 
 
@@ -66,11 +66,9 @@ def seal_fields(model, stroke):
         p = np.zeros(n_nodes)
         p[lay.rod_nodes] = U[lay.film_dofs]          # none without the film
         if stroke.viscoelastic is None:
-            sig, mises, pressure = element_stresses(model, u)
+            cells = stress_cells(model.full_solid(), u)
         else:
-            sig, mises, pressure = element_stresses(model, U, stroke.solid, stroke.prony)
-        cells = {"von_mises": mises, "pressure": pressure, "sigma_rr": sig[:, 0],
-                 "sigma_zz": sig[:, 1], "sigma_tt": sig[:, 2], "sigma_rz": sig[:, 3]}
+            cells = stress_cells(stroke.solid, U, stroke.prony)
         return {"displacement": disp, "film_pressure": p}, cells
     return fields
 
@@ -102,13 +100,9 @@ class Stroke(Step):
         fields = Fields(FieldSeries(writer.dir / "stroke_fields.xdmf", model.mesh.X,
                                     model.mesh.conn, writer.root),
                         seal_fields(model, stroke), wanted)
-        outputs = [Profiles(writer, stroke.profile, "stroke_profiles.csv", wanted), fields]
-        for obs in outputs:
-            obs.stop(0.0, U)
-        try:
-            U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, [series] + outputs)
-        finally:
-            fields.close()
+        outputs = [series, Profiles(writer, stroke.profile, "stroke_profiles.csv", wanted),
+                   fields]
+        U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, outputs)
         rows = series.rows
         v = np.array([r["v"] for r in rows])
         F = np.array([r["friction_total"] for r in rows])
