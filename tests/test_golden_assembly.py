@@ -61,7 +61,7 @@ def check(g, name, problem):
 
 def pressurised_load(state, g):
     from sealts.steps.pressurise import Pressurise
-    load = Pressurise.load(state)
+    load = Pressurise.pressure_load(state)
     load.set_reach(g["reach"])
     return load
 

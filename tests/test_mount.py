@@ -160,7 +160,8 @@ def test_axisymmetric_side_walls_balance_and_20_percent_squeeze(tmp_path):
     clear of the rod, every other node 0.2 mm. (This test ran at 25 % until the rod-side
     check showed that there the contact outgrows the arc: see the next test.)"""
     dg = 50.0 + 2 * 0.8 * 5.33
-    model, u, r = mount(tmp_path, groove={"diameter": dg})
+    state = prepared(tmp_path, groove={"diameter": dg})
+    model, u, r = state.model, state.u, state.results
     g = r["groove_reactions"]
     assert r["contact_force_total"] > 0
     assert r["static_equilibrium"]  # the final Newton solve without stabilisation converged
@@ -168,7 +169,7 @@ def test_axisymmetric_side_walls_balance_and_20_percent_squeeze(tmp_path):
     assert g["wall_pressure_side"] == pytest.approx(-g["wall_atmosphere_side"],
                                                     rel=1e-6, abs=1e-6)
     assert r["h_min"] > -7e-4   # no node deeper than h_mix into the rod
-    h = model.rod.gap(2.0, u)
+    h = model.rod.gap(state.t, u)
     assert min(h[0], h[-1]) > 0.1
     off = model.off_rod
     assert (model.mesh.X[off, 0] + u[model.udofs[off, 0]]).min() > 25.0 + 0.15

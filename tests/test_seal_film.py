@@ -271,7 +271,8 @@ def test_pressurised_oring_with_film(tmp_path):
                            corner_radius=g.rho)
     groove.w = g.w
     stab = ViscousStabilisation(ud.ravel(), model.stab.m, model.stab.c)
-    p_in = lambda t: ramp(t - 2.0)                          # 0 -> 1 MPa over t = 2..3
+    t0, t_mid, t1 = state.protocol.pressurise               # after the mount, as step 2
+    p_in = lambda t: ramp(t - t0)                           # 0 -> 1 MPa over t0 .. t0 + 1
     velocity = [0.0]
     film = SealFilmTerm(X, chain, lay.film_dofs, model.rod_radius, lambda t: velocity[0],
                         1e-8, p_in, 0.0, model.rod.area, udofs=ud, squeeze=False,
@@ -283,32 +284,32 @@ def test_pressurised_oring_with_film(tmp_path):
     assert load.wet.sum() == len(flank)
     # a consistent film pressure on the mounted seal, then the pseudo-time ramp
     fixed = Constraints(ud.ravel(), u[ud.ravel()])
-    u = Problem(lay.n, [film], constraints=fixed).solve_steady(u, 2.0)
-    film.set_row_scale(2.0, u)
+    u = Problem(lay.n, [film], constraints=fixed).solve_steady(u, t0)
+    film.set_row_scale(t0, u)
     atol = 1e-9 * model.force_scale
     ramped = Problem(lay.n, [solid, rod_c, groove, stab, film, load], linesearch="basic",
                      snes_atol=atol)
-    u = ramped.transient(u, 2.0, 4.0, 0.02, stops=(3.0,), rtol=1e-3, atol=1e-4)
+    u = ramped.transient(u, t0, t1, 0.02, stops=(t_mid,), rtol=1e-3, atol=1e-4)
     static = Problem(lay.n, [solid, rod_c, groove, film, load], linesearch="basic",
                      snes_atol=atol)
     static.max_it = 10
     results = []
     for v in (0.0, 100.0):
         velocity[0] = v
-        u = static.solve_steady(u, 4.0)
+        u = static.solve_steady(u, t1)
         p = u[lay.film_dofs]
-        results.append(dict(p=p, q=film.flows(4.0, u, np.zeros(lay.n)),
-                            h_min=rod_c.gap(4.0, u).min(), asperity=rod_c.forces(4.0, u).sum(),
-                            film=film.forces(4.0, u).sum(),
-                            shear=film.shear_forces(4.0, u).sum()))
+        results.append(dict(p=p, q=film.flows(t1, u, np.zeros(lay.n)),
+                            h_min=rod_c.gap(t1, u).min(), asperity=rod_c.forces(t1, u).sum(),
+                            film=film.forces(t1, u).sum(),
+                            shear=film.shear_forces(t1, u).sum()))
         if v == 0.0:
             assert p[0] == pytest.approx(1.0, abs=1e-12) and p[-1] == pytest.approx(0.0, abs=1e-12)
             assert np.all(np.diff(p) <= 1e-9) and p.min() >= -1e-9
             assert 0.0 < p[chain.size // 2] < 1.0               # it falls inside the contact
-            walls = groove.reactions(4.0, u)
-            fz = load.forces(4.0, u)
-            fluid_z = (fz[:, 1].sum() + fz[:, 3].sum() + film.axial_forces(4.0, u).sum()
-                       + film.shear_forces(4.0, u).sum())
+            walls = groove.reactions(t1, u)
+            fz = load.forces(t1, u)
+            fluid_z = (fz[:, 1].sum() + fz[:, 3].sum() + film.axial_forces(t1, u).sum()
+                       + film.shear_forces(t1, u).sum())
             wall_z = walls["wall_pressure_side"] + walls["wall_atmosphere_side"]
             assert fluid_z > 0 and wall_z == pytest.approx(-fluid_z, rel=1e-6)
     still, moving = results

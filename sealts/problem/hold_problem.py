@@ -25,7 +25,7 @@ class HoldProblem:
     def __init__(self, model, u0, load, p_from, p_to, t_ramp, ve, t_end):
         self.model, self.p_to = model, p_to
         ves = ViscoelasticSolid(model, ve, t_end)
-        self.series, self.shift_of_t, self.shift = ves.series, ves.shift_of_t, ves.shift
+        self.series, self.shift = ves.series, ves.shift
         self.classes = ves.classes
         mesh = model.mesh
         # the model's distributed mesh, with the Prony field on its cells
@@ -33,7 +33,6 @@ class HoldProblem:
         assert np.array_equal(lay.udofs, model.udofs)  # vertices first: u0 maps as it is
         X = mesh.X
         self.solid, self.prony, H0 = ves.terms(lay, u0)
-        self.instantaneous = ves.instantaneous
         # rod and groove at their final positions
         self.rod = copy.copy(model.rod)
         self.rod.r_rod = lambda t: model.r_rod_final
@@ -72,8 +71,8 @@ class HoldProblem:
                                       observers=observers, rtol=rtol, atol=1e-6)
 
     def long_term_terms(self):
-        """The long-term (hyperelastic) problem's boundary terms at the final pressure: rod,
-        groove, a copy of the load held at p_to (and the gauge)."""
+        """The long-term (hyperelastic) problem's boundary terms at the final pressure (rod,
+        groove, the load, the gauge), and that load: a copy of the hold's held at p_to."""
         load = copy.copy(self.load)
         load.pressure = lambda t: self.p_to
-        return [self.rod, self.groove, load] + self.gauge_terms
+        return [self.rod, self.groove, load] + self.gauge_terms, load

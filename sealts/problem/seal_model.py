@@ -17,6 +17,7 @@ from ..solid.term import SolidTerm
 from .problem import Problem
 
 NEWTON_ATOL = 1e-9   # a seal's Newton solves converge to this fraction of its force scale
+WALLS_FINAL = 1.0    # rod and groove reach their final radii at this pseudo-time
 
 
 def ramp(t):
@@ -148,10 +149,12 @@ class SealModel:
         return [self.rod, self.groove] + ([self.gauge] if self.gauge is not None else [])
 
     def rod_radius(self, t):
-        return self.r_rod0 + (self.r_rod_final - self.r_rod0) * ramp(t)
+        """The rod's radius at pseudo-time t: moving in over [0, WALLS_FINAL] (mm)."""
+        return self.r_rod0 + (self.r_rod_final - self.r_rod0) * ramp(t / WALLS_FINAL)
 
     def groove_radius(self, t):
-        return self.r_g0 + (self.r_g_final - self.r_g0) * ramp(t)
+        """The groove bottom's radius at pseudo-time t (mm)."""
+        return self.r_g0 + (self.r_g_final - self.r_g0) * ramp(t / WALLS_FINAL)
 
     def node_contact_pressure(self, t, u):
         return node_contact_pressure(self.mesh.X.shape[0], self.groove, self.rod, t, u)
@@ -179,10 +182,11 @@ class SealModel:
         p, _ = self.rod.pressure(t, u)
         return y, h, p
 
-    def results(self, t, u, udot=None):
-        """The contact's key numbers at (t, u). ``udot``: the state's rate where the final
-        static solve of a quasi-static step failed (None: u is a static equilibrium); the
-        viscous stabilisation's share of the rod load is reported from it."""
+    def results(self, t, u, udot=None, quasi_static=True):
+        """The contact's key numbers at (t, u). For the end of a quasi-static step
+        (``quasi_static``) also whether u is a static equilibrium (``udot`` None) and, from
+        ``udot`` (the state's rate where the final static solve failed), the viscous
+        stabilisation's share of the rod load."""
         y, h, p = self.contact_profile(t, u)
         f_rod = self.rod.forces(t, u)
         total = float(f_rod.sum())
@@ -198,12 +202,13 @@ class SealModel:
             "h_min": float(h.min()),
             "groove_reactions": self.groove.reactions(t, u),
         }
-        # the viscous stabilisation's force at the end, against the contact load it must not
-        # carry (zero when the final static solve succeeded)
-        stab = self.stab.forces(np.zeros(self.n) if udot is None else udot)
-        out["stabilisation_share"] = float(np.abs(stab).max()
-                                           / max(np.abs(f_rod).max(), 1e-300))
-        out["static_equilibrium"] = udot is None
+        if quasi_static:
+            # the viscous stabilisation's force at the end, against the contact load it must
+            # not carry (zero when the final static solve succeeded)
+            stab = self.stab.forces(np.zeros(self.n) if udot is None else udot)
+            out["stabilisation_share"] = float(np.abs(stab).max()
+                                               / max(np.abs(f_rod).max(), 1e-300))
+            out["static_equilibrium"] = udot is None
         if self.gauge is not None:
             out["rolling_angle_deg"] = float(np.degrees(self.gauge.angle(u)))
             out["rolling_gauge_torque"] = self.gauge.torque(u)
@@ -262,21 +267,3 @@ def _file_mesh(path, cache, r_rod, groove):
         raise SceneError(f"seal.mesh_file: radial size {r_out - r_in:g} mm squeezed into "
                          f"{space:g} mm (over 35 % squeeze) cannot be mounted")
     return replace(mesh, X=X)
-
-
-def element_stresses(model, u, solid=None, prony=None):
-    """Element-mean Cauchy stress (rr, zz, tt, rz), von Mises and pressure (MPa) of the
-    long-term material (``model.full_solid()``), or of ``solid`` plus the Prony stress of
-    ``prony`` (:meth:`sealts.solid.viscoelastic.PronyTerm.viscous_cauchy`) at the state u
-    of their layout."""
-    from ..solid.neo_hooke import cauchy_stress
-    solid = model.full_solid() if solid is None else solid
-    f, P, p_el, _ = solid.state(u)
-    s = cauchy_stress(f.reshape(-1, 5), P.reshape(-1, 5), np.repeat(p_el, 4))
-    s = s.reshape(-1, 4, 4)
-    if prony is not None:
-        s = s + prony.viscous_cauchy(u)
-    s = s.mean(1)
-    rr, zz, tt, rz = s.T
-    mises = np.sqrt(0.5 * ((rr - zz) ** 2 + (zz - tt) ** 2 + (tt - rr) ** 2) + 3 * rz**2)
-    return s, mises, -(rr + zz + tt) / 3.0

@@ -11,7 +11,7 @@ material, from the hold's final state) is solved as well and the differences are
 import numpy as np
 
 from ..core import SolveError
-from ..io.observers import Profiles, Series, StepLine
+from ..io.observers import Profiles, Series, StepLine, solver_columns
 from ..problem.hold_problem import HoldProblem
 from .base import Step
 from .pseudo_time import PseudoTime
@@ -29,7 +29,7 @@ class HoldColumns:
         hold, model = self.hold, self.hold.model
         u = hold.displacement(U)
         _, h, p = model.contact_profile(t, u)
-        return {"dt": info.dt, "p_sealed": hold.load.pressure(t),
+        return {"p_sealed": hold.load.pressure(t),
                 "rod_force": float(hold.rod.forces(t, u).sum()),
                 "p_contact_max": float(p.max()), "h_min": float(h.min()),
                 "wetted": float(hold.load.wet.mean())}
@@ -58,11 +58,11 @@ class Hold(Step):
         stops += [t for t in ve.temperature_times if 0.0 < t < t_end]  # kinks of A(theta(t))
         line = StepLine("hold step", [("rod force", "rod_force", 1.0, "N"),
                                       ("min h", "h_min", 1e3, "um")])
-        observers = [Series(state.writer, [HoldColumns(step), _newton], say, line),
+        observers = [Series(state.writer, [HoldColumns(step), solver_columns], say, line),
                      Profiles(state.writer, profile, "hold_profiles.csv")]
         U = step.run(t_end, hold.dt, hold.rtol, stops=stops, observers=observers)
         u = step.displacement(U)
-        res = model.results(t_end, u)
+        res = model.results(t_end, u, quasi_static=False)
         res["pressurised"] = state.results
         c = step.problem.counters
         state.parts["hold"] = {
@@ -83,10 +83,6 @@ class Hold(Step):
         state.counters.add(c)
 
 
-def _newton(t, U, info, row):
-    return {"newton": info.newton}
-
-
 def long_term_check(step, U, t_end, protocol):
     """How far the hold's end state is from the long-term (hyperelastic) equilibrium at
     the final pressure: its out-of-balance nodal forces in the long-term problem (N), and
@@ -100,8 +96,7 @@ def long_term_check(step, U, t_end, protocol):
     if t_end < 20.0 * tau_max:
         return {"skipped": f"hold.t_end = {t_end:g} s is not far beyond the longest "
                            f"relaxation time {tau_max:g} s"}
-    walls = step.long_term_terms()
-    load = walls[2]
+    walls, load = step.long_term_terms()
     # the hold's state in the long-term problem: its out-of-balance nodal forces
     residual = m.problem(m.n, m.local_terms(walls), dofs=m.dofs).global_residual(t_end, u)
     out = {"long_term_residual_max_N": float(np.abs(residual).max())}

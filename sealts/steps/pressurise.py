@@ -17,7 +17,7 @@ class Pressurise(Step):
     name = "pressurise"
 
     @staticmethod
-    def load(state):
+    def pressure_load(state):
         """The pressure load of the step: p_in ramped over the protocol's ramp, nothing
         wetted yet."""
         p_in, t0 = state.scene.fluid.p_in, state.protocol.pressurise[0]
@@ -31,7 +31,7 @@ class Pressurise(Step):
         state.say(f"mounted: rod force {mounted['contact_force_total']:.6g} N; pressurising "
                   f"to {p_in:g} MPa", force=True)
         t0, t_ramp, t1 = state.protocol.pressurise
-        load = self.load(state)
+        load = self.pressure_load(state)
         load.update(model.node_contact_pressure(t0, state.u), 0.0)
         eq = quasi_static(model, [load], state.u, (t0, t_ramp, t1), dt,
                           hooks=[AdvancingFront(load, model.node_contact_pressure)],

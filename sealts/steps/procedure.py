@@ -6,13 +6,13 @@
     film:  [SteadyFilm] or [TransientFilm]
 
 ``prepare`` runs steps 1-2 alone (tests, benchmarks); a sweep is ``prepare`` once, then a
-step 3 per operating point on a copy of its state. A new step is a file in this package and
-one line in ``steps_for``.
+step 3 per operating point on a fork of its state (``RunState.fork``). A new step is a file
+in this package, imported here and put in ``steps_for``.
 """
 import time
 
-from ..io.progress import Progress
 from ..io.fields import write_fields
+from ..io.progress import Progress
 from ..problem.seal_model import model_from_scene
 from .checkpoint import Checkpoint
 from .film import SteadyFilm, TransientFilm
@@ -25,14 +25,18 @@ from .state import RunState
 from .stroke import Stroke
 
 
+def steps_1_2(scene):
+    """A seal scene's steps 1-2: mount and (p_in != 0) pressurise, or the restart."""
+    if scene.start.state:
+        return [Restart(scene.start.state)]
+    return [Mount()] + ([Pressurise()] if scene.fluid.p_in != 0.0 else [])
+
+
 def steps_for(scene, command="run"):
     """The steps of a scene (``command``: "run" or "ihl")."""
     if scene.model == "film":
         return [SteadyFilm() if scene.analysis.type == "steady" else TransientFilm()]
-    if scene.start.state:
-        steps = [Restart(scene.start.state)]
-    else:
-        steps = [Mount()] + ([Pressurise()] if scene.fluid.p_in != 0.0 else [])
+    steps = steps_1_2(scene)
     if command == "ihl":
         return steps + [Ihl()]
     if not scene.start.state:
@@ -68,9 +72,9 @@ def run_steps(steps, state):
 def prepare(scene, comm=None, writer=None, say=None):
     """Steps 1-2 of a seal scene (mounted, pressurised to fluid.p_in when it is set) or
     the state they saved: the RunState with u, t and the front."""
-    state = new_state(scene, comm, writer, say)
-    steps = [s for s in steps_for(scene, "ihl") if not isinstance(s, Ihl)]
-    return run_steps(steps, state)
+    if scene.model != "seal":
+        raise ValueError("prepare: steps 1-2 are a seal scene's (model = 'seal')")
+    return run_steps(steps_1_2(scene), new_state(scene, comm, writer, say))
 
 
 def run_scene(scene, writer, comm, command="run", petsc_options=None):
@@ -90,7 +94,8 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
         write_fields(str(writer.dir / "fields.xdmf"), model, state.u)
     summary = _summary(state, command)
     summary["wall_time_s"] = time.perf_counter() - t_wall
-    summary["provenance"] = provenance(scene, petsc_options or {})
+    if writer.root:          # git runs once, on rank 0, which alone writes
+        summary["provenance"] = provenance(scene, petsc_options or {})
     writer.summary(summary)
     return summary
 

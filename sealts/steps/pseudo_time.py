@@ -3,7 +3,7 @@
 Mounting and pressurisation have no time of their own; they run along a pseudo-time t:
 
 * mount: the groove bottom (and a rod smaller than the seal) move to their final radii
-  over t in [0, 1] (:func:`sealts.problem.seal_model.ramp`), then hold until ``t_hold``
+  over t in [0, 1] (``SealModel.rod_radius``, ``groove_radius``), then hold until ``t_hold``
   (``mount.t_hold``) so that the viscous stabilisation dies out;
 * pressurise: p_in ramps over [t_hold, t_hold + 1] and holds until 2 t_hold;
 * a state restarted from ``state.h5`` continues from the end of what it saved.
@@ -13,11 +13,13 @@ hold's long-term check) runs on a window [t, t + 1] after that.
 """
 from dataclasses import dataclass
 
+from ..problem.seal_model import WALLS_FINAL
+
 
 @dataclass(frozen=True)
 class PseudoTime:
     t_hold: float = 2.0            # end of the mount (mount.t_hold)
-    walls_final: float = 1.0       # rod and groove at their final radii from here on
+    walls_final: float = WALLS_FINAL  # rod and groove at their final radii from here on
 
     @property
     def mount(self):

@@ -1,10 +1,13 @@
-"""Steps 1-2 read back from an earlier run's ``state.h5`` (``[start] state``) instead of
-computed. The mesh and p_in must be the ones it was saved with (one-line SceneError
-otherwise); the run continues at the end of steps 1-2 (:mod:`sealts.steps.pseudo_time`)."""
+"""Steps 1-2 read back from an earlier run's ``state.h5`` (``[start] state``, written by
+:meth:`sealts.steps.state.RunState.save`) instead of computed. The mesh and p_in must be the
+ones it was saved with (one-line SceneError otherwise); the run continues where the saved
+state stood, with its pressure front and the results it reported."""
+import json
+
 import numpy as np
 
-from ..problem.seal_model import ramp
 from .base import Step
+from .pressurise import Pressurise
 from .state import read_state
 
 
@@ -28,13 +31,13 @@ class Restart(Step):
                              f"{attrs.get('p_in'):g} MPa, not fluid.p_in = {p_in:g} MPa")
         state.u = np.zeros(model.n)
         state.u[model.udofs] = un
-        state.t = state.protocol.end(pressurised=p_in != 0.0)
+        state.t = float(attrs.get("t", state.protocol.end(pressurised=p_in != 0.0)))
         if p_in != 0.0:
-            t0 = state.protocol.pressurise[0]
-            p_crit = float(attrs["p_crit"])
-            state.load = model.pressure_load(lambda t: p_in * ramp(t - t0), p_crit)
+            state.load = Pressurise.pressure_load(state)
+            state.load.p_crit = float(attrs["p_crit"])
             state.load.set_reach(reach)
         state.udot = None
         state.say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not "
                   "repeated", force=True)
-        state.results = model.results(state.t, state.u)
+        state.results = (json.loads(attrs["results"]) if "results" in attrs
+                         else model.results(state.t, state.u))

@@ -7,10 +7,13 @@ pressure-penetration front (``load``), the solvers' counters, and what the summa
 (``results``, the step blocks in ``parts``). The model holds no history of its own.
 
 ``save`` writes the state of steps 1-2 as ``state.h5`` (the displacement per node, the mesh
-coordinates it belongs to, the front's reach; p_in, p_crit and t as attributes);
-:class:`Restart` reads it back in place of those steps.
+coordinates it belongs to, the front's reach; p_in, p_crit, t and the results as
+attributes); :class:`sealts.steps.restart.Restart` reads it back in place of those steps.
+``fork`` copies a state for a sweep.
 """
-from dataclasses import dataclass, field
+import copy
+import json
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -35,13 +38,22 @@ class RunState:
     done: list = field(default_factory=list)     # names of the steps run
 
     @property
-    def pressurised(self):
-        return self.load is not None
-
-    @property
     def protocol(self):
         """The pseudo-time protocol of steps 1-2 for this scene."""
         return PseudoTime(self.scene.mount.t_hold)
+
+    def fork(self):
+        """A copy to run other steps on (a sweep: steps 1-2 once, then a step 3 per
+        operating point from a fork each): its own counters, results, summary blocks and
+        front; the model, scene, writer and arrays are shared (steps replace u, never write
+        into it)."""
+        load = None
+        if self.load is not None:
+            load = copy.copy(self.load)
+            load.set_reach(list(self.load.reach))
+        return replace(self, load=load, counters=copy.copy(self.counters),
+                       results=copy.deepcopy(self.results),
+                       parts=copy.deepcopy(self.parts), done=list(self.done))
 
     def save(self, path):
         """Write the state (rank 0) as an HDF5 file, whole: a temporary file renamed into
@@ -49,7 +61,7 @@ class RunState:
         m = self.model
         arrays = {"u": self.u[m.udofs], "X": m.mesh.X}
         attrs = {"p_in": self.scene.fluid.p_in, "t": self.t, "scene": self.scene.name,
-                 "source": self.scene.source}
+                 "source": self.scene.source, "results": json.dumps(self.results)}
         if self.load is not None:
             arrays["front_reach"] = np.asarray(self.load.reach, float)
             attrs["p_crit"] = self.load.p_crit
