@@ -58,6 +58,27 @@ def test_command_line_petsc_options_reach_the_solvers(tmp_path):
     assert "type: beuler" in r.stdout        # the command line beat the scene's bdf
     out = Results(tmp_path)
     assert out.summary["steps_accepted"] == 8    # 1 s at the fixed dt of 0.125 s
+    # the summary records what the run needs to be repeated: the options as given, the
+    # solvers they led to (the default LU solver too), the resolved scene with every
+    # default, the versions
+    import dataclasses
+    import json
+    from importlib import metadata
+
+    from sealts.scene import load_scene
+    prov = out.summary["provenance"]
+    assert prov["petsc_options"]["ts_type"] == "beuler"
+    assert prov["petsc_options"]["ts_dt"] == "0.125"
+    solver = prov["solvers"]["(none)"]
+    assert solver["ts_type"] == "beuler" and solver["pc_type"] == "lu"
+    assert solver["pc_factor_mat_solver_type"] == "umfpack"
+    scene = json.loads(json.dumps(dataclasses.asdict(load_scene(CONFIGS / "squeeze_plates.toml"))))
+    assert prov["scene"] == scene and "flow_factors" in prov["scene"]["film"]
+    assert prov["sealts_version"] == metadata.version("sealts")
+    assert prov["petsc4py_version"] == metadata.version("petsc4py")
+    assert prov["petsc_version"] == prov["petsc4py_version"]
+    import re
+    assert prov["git_commit"] is None or re.fullmatch(r"[0-9a-f]{40}\+?", prov["git_commit"])
     assert out.series["t"][-1] == pytest.approx(1.0)
 
 

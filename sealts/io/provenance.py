@@ -1,5 +1,7 @@
 """What a run needs to be repeated: the resolved scene (every key with its value, defaults
-included), the PETSc options in force, and the versions of sealts, its git commit, PETSc,
+included), the PETSc options given (command line and the scene's [petsc] table), the
+solvers in force by options prefix (types and tolerances after setFromOptions, the
+defaults sealts sets included), and the versions of sealts, its git commit, PETSc,
 petsc4py, numpy, numba and Python. Recorded in ``summary.json`` as ``provenance``."""
 import dataclasses
 import platform
@@ -33,9 +35,12 @@ def git_commit():
 
 def provenance(scene, petsc_options):
     from petsc4py import PETSc
+
+    from ..problem.problem import SOLVERS
     return {
         "scene": dataclasses.asdict(scene),
         "petsc_options": dict(petsc_options),
+        "solvers": {prefix or "(none)": dict(s) for prefix, s in SOLVERS.items()},
         "sealts_version": _version("sealts"),
         "git_commit": git_commit(),
         "petsc_version": "%d.%d.%d" % PETSc.Sys.getVersion(),
