@@ -127,14 +127,14 @@ SERIES_PANELS = [
         ("friction_solid", "solid (asperity) friction at the rod", 1.0, {}),
         ("friction_groove", "groove walls' friction (axial)", 1.0, {"ls": "--"})]),
     (0, "Rod velocity", "v [mm/s]", False, [("v", "rod velocity v", 1.0, {})]),
+    # a key given as a tuple: the first of these names that the rows carry (the stroke's
+    # names, then the film-only scenes')
     (0, "Radial load on the rod side", "load [N]", False, [
         ("normal_load", "total (film + asperity)", 1.0, TOTAL),
-        ("load_fluid", "film pressure", 1.0, {}),
-        ("load", "film pressure", 1.0, {}),
+        (("load_fluid", "load"), "film pressure", 1.0, {}),
         ("load_asperity", "asperity contact", 1.0, {})]),
-    (0, "Peak film pressure", "p_max [MPa]", False, [
-        ("p_fluid_max", "peak fluid pressure", 1.0, {}),
-        ("p_max", "peak fluid pressure", 1.0, {})]),
+    (0, "Peak film pressure", "p_max [MPa]", False,
+     [(("p_fluid_max", "p_max"), "peak fluid pressure", 1.0, {})]),
     (1, "Flow through the film", "Q [mm^3/s]", False, [
         ("Q_in", "Q_in: into the film at the pressure side", 1.0, {}),
         ("Q_out", "Q_out: out of the film at the air side", 1.0, {})]),
@@ -172,13 +172,20 @@ def _column(rows, key, scale=1.0):
     return out
 
 
+def _key(key, present):
+    """The column a panel line draws: ``key``, or the first present of a tuple of names
+    (None where the rows carry none)."""
+    names = key if isinstance(key, tuple) else (key,)
+    return next((k for k in names if k in present), None)
+
+
 def _plot_panels(rows, path, specs, title, xlabel, log_time=False):
     """The panels of ``specs`` whose keys the rows carry, in up to two columns, each line
     named in its panel's legend. Returns the Figure."""
     t = _column(rows, "t")
     keep = np.isfinite(t) & (t > 0 if log_time else True)
     present = {k for r in rows for k in r}
-    cols = [[s for s in specs if s[0] == c and any(k in present for k, *_ in s[4])]
+    cols = [[s for s in specs if s[0] == c and any(_key(k, present) for k, *_ in s[4])]
             for c in (0, 1)]
     cols = [c for c in cols if c]
     nrow = max((len(c) for c in cols), default=1)
@@ -192,7 +199,8 @@ def _plot_panels(rows, path, specs, title, xlabel, log_time=False):
                 continue
             _, name, unit, log_y, lines = col[i]
             for key, label, scale, style in lines:
-                if key in present:
+                key = _key(key, present)
+                if key is not None:
                     a.plot(t[keep], _column(rows, key, scale)[keep], label=label,
                            **{"lw": 1.3, **style})
             if log_y and a.lines:
