@@ -4,7 +4,7 @@ import math
 import numpy as np
 import pytest
 
-from sealts.film.asperity import asperity_pressure_array
+from sealts.contact.asperity.exponential import asperity_pressure_array
 from sealts.film.flow_factors import (H_LO, PATIR_CHENG_GAMMAS, FlowFactors,
                                       PATIR_CHENG_SHEAR, pressure_fit_floor)
 from sealts.film.gap import h_eff

@@ -9,6 +9,7 @@ spring held by friction against the closed form of a linear spring on a stick-sl
 import numpy as np
 import pytest
 
+from sealts.contact.asperity import ExponentialLaw
 from sealts.contact.friction import RodFriction, saturation
 from sealts.contact.rigid import RodContact
 from sealts.mesh.seal_mesh import ORing, build_mesh
@@ -29,7 +30,7 @@ def oring_chain(tmp_path, seed=0):
     n = 2 * X.shape[0]
     u = rng.uniform(-2e-4, 2e-4, n)
     r_rod = 25.0
-    rod = RodContact(X, chain, lambda t: r_rod, 2 * np.pi * r_rod, H_MIX, P_MIX)
+    rod = RodContact(X, chain, lambda t: r_rod, 2 * np.pi * r_rod, ExponentialLaw(H_MIX, P_MIX))
     # gaps 1.2e-4 apart, the nearest 1.5e-5 from the law's kinks at +-h_mix
     h = rng.permutation(np.linspace(-9.3e-4, 1.03e-3, chain.size))
     u[rod.ur] = r_rod + h - X[chain, 0]
@@ -184,7 +185,7 @@ def test_spring_held_by_friction_stick_slip():
     stick u = c (s - a) / (k + c) while |gamma| <= gamma_crit / 2, slide u = +-F_c / k
     once |gamma| >= gamma_crit, the anchor a = s* - u* -+ gamma_crit after the turn at s*."""
     X = np.array([[1.0, 0.0], [1.0, 1.0]])
-    rod = RodContact(X, np.array([0, 1]), lambda t: 1.0, 1.0, H_MIX, P_MIX)
+    rod = RodContact(X, np.array([0, 1]), lambda t: 1.0, 1.0, ExponentialLaw(H_MIX, P_MIX))
     mu, k = 0.1, 1e3
     fric = RodFriction(rod, slip=lambda t: t, mu_s=mu)
     problem = Problem(4, [fric, Springs(rod.uz, k)], constraints=Constraints(rod.ur, 0.0))

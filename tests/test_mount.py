@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, config_text, scene
+from sealts.contact.asperity import ExponentialLaw
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
 from sealts.io.results import Results
 from sealts.mesh.seal_mesh import ORing, build_mesh
@@ -40,7 +41,8 @@ def test_contact_and_stabilisation_jacobians(tmp_path, axisym):
     rng = np.random.default_rng(0)
     u = rng.uniform(-2e-4, 2e-4, n)
     # put the rod and walls where nodes sit in and near contact
-    rod = RodContact(X, chain, lambda t: X[chain, 0].min() + 2e-4 * t, 157.0, 7e-4, 15.0)
+    rod = RodContact(X, chain, lambda t: X[chain, 0].min() + 2e-4 * t, 157.0,
+                     ExponentialLaw(7e-4, 15.0))
     groove = GrooveContact(X, m.boundary_nodes(), trib, axisym,
                            lambda t: X[:, 0].max() - 1e-4 * t,
                            lambda t: (X[:, 1].min() + 1e-4, X[:, 1].max() - 1e-4))

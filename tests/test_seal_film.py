@@ -264,7 +264,7 @@ def test_pressurised_oring_with_film(tmp_path):
     u[ud] = u_mounted[model.udofs]
     # the mounted model's terms, on the layout with the film pressure field
     solid = SolidTerm(X, mesh.conn, model.material, True, udofs=ud, heating=ramp)
-    rod_c = RodContact(X, chain, model.rod_radius, model.rod.area, 7e-4, 15.0, udofs=ud)
+    rod_c = RodContact(X, chain, model.rod_radius, model.rod.area, model.law, udofs=ud)
     g = model.groove
     groove = GrooveContact(X, g.nodes, np.ones(X.shape[0]), True, model.groove_radius,
                            g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,

@@ -28,7 +28,6 @@ the square's edges, where the arc meets the flat walls. rho = 0 gives sharp corn
 """
 import numpy as np
 
-from ..film.asperity import asperity_pressure_array
 from ..mesh.layout import vertex_dofs
 from ..core import Term
 
@@ -75,11 +74,12 @@ def softplus_penalty(g, k, delta):
 
 
 class RodContact(Term):
-    def __init__(self, X, chain, r_rod, area, h_mix, p_mix, udofs=None):
-        """``chain``: rod-side nodes ordered by z; ``r_rod(t)`` the rod radius; ``udofs``:
-        node -> (u_r, u_z) dofs (:class:`sealts.mesh.layout.Layout`)."""
+    def __init__(self, X, chain, r_rod, area, law, udofs=None):
+        """``chain``: rod-side nodes ordered by z; ``r_rod(t)`` the rod radius; ``law``: the
+        asperity law (:mod:`sealts.contact.asperity`); ``udofs``: node -> (u_r, u_z) dofs
+        (:class:`sealts.mesh.layout.Layout`)."""
         self.X, self.chain, self.r_rod, self.area = X, np.asarray(chain), r_rod, area
-        self.h_mix, self.p_mix = h_mix, p_mix
+        self.law = law
         c = self.chain
         m = c.size
         udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
@@ -99,7 +99,8 @@ class RodContact(Term):
         return self.half * (z[self.hi] - z[self.lo])
 
     def pressure(self, t, u):
-        return asperity_pressure_array(self.gap(t, u), self.h_mix, self.p_mix)
+        """(p_s, dp_s/dh) of the asperity law at each chain node's gap (MPa, MPa/mm)."""
+        return self.law.pressure(self.gap(t, u))
 
     def forces(self, t, u):
         """Radial contact force on each chain node (N)."""

@@ -14,7 +14,6 @@ import math
 import numba
 import numpy as np
 
-from .asperity import asperity_pressure_array
 from .gap import h_eff
 from .reynolds_fv import control_volumes
 
@@ -47,12 +46,13 @@ def shear_stress(y, h, hd, dpdy, v, eta, h_floor, beta):
     return eta * v / he - 0.5 * he * dpdy - eta * weighted_gradient(y, hd, beta)
 
 
-def contact(h, v, h_mix, p_mix, mu_s):
-    """Asperity pressure (Eq. 44) and the solid friction stress of a rod sliding at v.
+def contact(h, v, law, mu_s):
+    """Asperity pressure of the ``law`` (:mod:`sealts.contact.asperity`, Eq. 44 by default)
+    and the solid friction stress of a rod sliding at v.
 
     With the rod sliding, the slip exceeds gamma_crit and Eq. 46 gives mu_s p_s sign(v).
     """
-    ps, _ = asperity_pressure_array(np.asarray(h, float), h_mix, p_mix)
+    ps, _ = law.pressure(h)
     return ps, mu_s * ps * np.sign(v)
 
 

@@ -5,6 +5,7 @@ film-only steps (:mod:`sealts.steps.film`) solve it steady (SNES) or transient (
 """
 import numpy as np
 
+from ..contact.asperity import law_from_scene
 from ..film.flow_factors import FlowFactors
 from ..film.paper_scheme import PaperScheme
 from ..film.quantities import (contact, effective_gap, integrate, shear_stress,
@@ -62,7 +63,7 @@ class FilmModel:
         prof = {"y": self.y, "h": h, "p": p, "tau": tau}
         if s.asperity.enabled:
             a = s.asperity
-            prof["p_asperity"], prof["tau_solid"] = contact(h, v, a.h_mix, a.p_mix, a.mu_s)
+            prof["p_asperity"], prof["tau_solid"] = contact(h, v, law_from_scene(a), a.mu_s)
         return prof
 
     def scalars(self, t, u):

@@ -8,6 +8,7 @@ handed from step to step.
 """
 import numpy as np
 
+from ..contact.asperity import ExponentialLaw, law_from_scene
 from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
                              tributary_lengths)
 from ..contact.rod_side_guard import RodSideGuard
@@ -42,7 +43,7 @@ class SealModel:
     circle, which nothing else holds from rolling between frictionless walls."""
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
-                 h_mix=7e-4, p_mix=15.0, penalty=1e4, stabilisation=1e-3, depth=1.0,
+                 law=None, penalty=1e4, stabilisation=1e-3, depth=1.0,
                  corner_radius=0.0, comm=None, hold_rolling=None):
         from petsc4py import PETSc
 
@@ -65,7 +66,8 @@ class SealModel:
         self.r_g_final = groove_radius
         self.r_g0 = max(groove_radius, r_out + 1e-3)
         area = 2 * np.pi * rod_radius if axisym else depth
-        self.rod = RodContact(X, chain, self.rod_radius, area, h_mix, p_mix, udofs=udofs)
+        self.law = law if law is not None else ExponentialLaw()
+        self.rod = RodContact(X, chain, self.rod_radius, area, self.law, udofs=udofs)
         bnd = mesh.boundary_nodes()
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
@@ -119,7 +121,8 @@ class SealModel:
 
     def rod_side_guard(self, udofs=None, r_rod=None):
         """The post-step guard of :mod:`sealts.contact.rod_side_guard` for this seal: the
-        boundary nodes off the rod side may not pass h_mix into the rod. ``udofs``,
+        boundary nodes off the rod side may not pass into the rod by more than the asperity
+        law's contact gap (h_mix of Eq. 44). ``udofs``,
         ``r_rod``: another layout's dofs (the stroke's) and rod radius (default the
         model's, moving in steps 1-2)."""
         udofs = self.udofs if udofs is None else udofs
@@ -134,7 +137,8 @@ class SealModel:
             return (f"; the plane-strain section has rolled by {roll:.3g} degrees (without "
                     "hoop strain only friction holds a round section from rolling)")
 
-        return RodSideGuard(self.mesh.X, self.off_rod, udofs, r_rod, self.rod.h_mix, note)
+        return RodSideGuard(self.mesh.X, self.off_rod, udofs, r_rod, self.law.contact_gap,
+                            note)
 
     def problem(self, n, terms, **kw):
         """A Problem of this seal's terms on its communicator: the basic line search (the
@@ -236,8 +240,8 @@ def model_from_scene(scene, comm=None):
     material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)
     return SealModel(mesh, material, scene.rod.radius, 0.5 * gr.diameter,
                      (z0 - 0.5 * gr.width, z0 + 0.5 * gr.width),
-                     axisym=sl.symmetry == "axisymmetric", h_mix=scene.asperity.h_mix,
-                     p_mix=scene.asperity.p_mix, penalty=scene.mount.penalty,
+                     axisym=sl.symmetry == "axisymmetric",
+                     law=law_from_scene(scene.asperity, material), penalty=scene.mount.penalty,
                      stabilisation=scene.mount.stabilisation,
                      corner_radius=gr.corner_radius, comm=comm)
 

@@ -91,7 +91,7 @@ class StrokeProblem:
         chain = mesh.chain("rod_side")
         a = scene.asperity
         self.rod = RodContact(X, chain, lambda t: model.r_rod_final, model.rod.area,
-                              a.h_mix, a.p_mix, udofs=ud)
+                              model.law, udofs=ud)
         g = model.groove
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, g.nodes, trib, axisym, lambda t: model.r_g_final,
@@ -226,7 +226,7 @@ class StrokeProblem:
         f, rod = self.film, self.rod
         h = rod.gap(t, U)
         y = rod.X[rod.chain, 1] + U[rod.uz]
-        touching = h < rod.h_mix
+        touching = rod.law.touching(h)
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
         q_in = q_out = shear = load_fluid = p_max = 0.0
         volumes = np.zeros(2)

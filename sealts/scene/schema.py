@@ -78,8 +78,25 @@ class Film:
 @dataclass(frozen=True)
 class Asperity:
     enabled: bool = option(False, doc="report asperity pressure and solid friction")
+    law: str = option("exponential", choices=("exponential", "greenwood-williamson"),
+                      doc="exponential: the paper's Eq. 44 (h_mix, p_mix); "
+                          "greenwood-williamson: Gaussian summits, Greenwood and Williamson "
+                          "1966 (summit_density, summit_radius, summit_sigma, modulus)")
     h_mix: float = option(7e-4, unit="mm", gt=0.0, doc="onset of asperity contact (Eq. 44)")
     p_mix: float = option(15.0, unit="MPa", gt=0.0, doc="asperity pressure at h = 0 (Eq. 44)")
+    summit_density: float = option(1e4, unit="1/mm^2", gt=0.0,
+                                   doc="greenwood-williamson: summits per area eta_s; "
+                                       "typically 1e3-1e5 /mm^2, with eta_s beta sigma_s "
+                                       "0.03-0.05 (Greenwood and Tripp 1970)")
+    summit_radius: float = option(0.02, unit="mm", gt=0.0,
+                                  doc="greenwood-williamson: summit radius beta; typically "
+                                      "0.01-0.1 mm for ground and honed steel")
+    summit_sigma: float = option(2.15e-4, unit="mm", gt=0.0,
+                                 doc="greenwood-williamson: deviation of the summit heights "
+                                     "sigma_s; about Rq (the paper's 0.215 um, Table 3)")
+    modulus: float = option(0.0, unit="MPa", ge=0.0,
+                            doc="greenwood-williamson: composite modulus E'; 0 takes the "
+                                "seal's E/(1 - nu^2) against a rigid rod (4 G for rubber)")
     mu_s: float = option(0.1, ge=0.0, doc="solid friction coefficient (Eq. 46)")
 
 
@@ -371,8 +388,26 @@ def _check_stroke(s, base):
                          f"(velocity is {st.velocity!r})")
 
 
+GW_KEYS = ("summit_density", "summit_radius", "summit_sigma", "modulus")
+
+
+def _check_asperity(s):
+    """Keys of the law that is not chosen are an error (they would be ignored)."""
+    a, default = s.asperity, Asperity()
+    if a.law != "greenwood-williamson":
+        for key in GW_KEYS:
+            if getattr(a, key) != getattr(default, key):
+                raise SceneError(f"asperity.{key} is only used with asperity.law = "
+                                 f"'greenwood-williamson' (law is {a.law!r})")
+    elif s.model == "film" and a.modulus == 0.0:
+        raise SceneError("asperity.modulus must be > 0 MPa with asperity.law = "
+                         "'greenwood-williamson' in a film scene (no seal material to take "
+                         "it from)")
+
+
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
+    _check_asperity(s)
     if s.model == "seal":
         _check_seal_geometry(s, base)
         mat = s.material

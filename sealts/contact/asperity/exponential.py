@@ -1,4 +1,4 @@
-"""Asperity (solid) contact pressure, paper Eq. 44-45.
+"""The paper's asperity law, Eq. 44-45 (``asperity.law = "exponential"``, the default):
 
     p_s(h) = 0                                              h >= h_mix
     p_s(h) = p_mix / (e - 1) (1 - h/h_mix) (exp(1 - h/h_mix) - 1)   h <  h_mix
@@ -15,6 +15,8 @@ import math
 
 import numba
 import numpy as np
+
+from .base import AsperityLaw
 
 _E1 = math.e - 1.0
 
@@ -44,3 +46,20 @@ def asperity_pressure_array(h, h_mix, p_mix):
     for i in range(h.size):
         p[i], dp[i] = asperity_pressure(h[i], h_mix, p_mix)
     return p, dp
+
+
+class ExponentialLaw(AsperityLaw):
+    name = "exponential"
+
+    def __init__(self, h_mix=7e-4, p_mix=15.0):
+        """``h_mix`` (mm): the separation where contact begins; ``p_mix`` (MPa): p_s at
+        h = 0 (the paper's 0.7 um and 15 MPa, Table 3)."""
+        self.h_mix, self.p_mix = float(h_mix), float(p_mix)
+        self.contact_gap = self.h_mix
+
+    @classmethod
+    def from_scene(cls, asperity, material=None):
+        return cls(asperity.h_mix, asperity.p_mix)
+
+    def pressure(self, h):
+        return asperity_pressure_array(np.asarray(h, float), self.h_mix, self.p_mix)
