@@ -9,9 +9,9 @@ redesign) to 1e-12 of their largest entry.
 front's reach, and per problem t, shift, U (a state near the step's path, with noise), U'
 (random, from a seed), F and J x_k for three random vectors x_k (from the same seed), and
 the friction anchors and film row scales that the stroke's history had. The Prony problems
-carry one term (16 internal variables per cell), which keeps the data small. An end-to-end comparison is not the test of a
-refactor: round-off alone moves the cycle's net leakage by about 2 %. The dof numbering is
-unchanged, so no permutation is needed.
+carry one term (16 internal variables per cell), which keeps the data small. An end-to-end
+comparison is not the test of a refactor: round-off alone moves the cycle's net leakage by
+about 2 %. The dof numbering is unchanged, so no permutation is needed.
 """
 from dataclasses import replace
 from pathlib import Path

@@ -1,9 +1,10 @@
 """Outputs as observers of a Problem's post-step (:class:`sealts.core.Observer`).
 
-A step attaches the observers it wants to its problem's run: a series row per accepted step
-built from column sources, a progress line, profiles and fields at the output times (``Recorder``, in memory, is
-:class:`sealts.core.Recorder`). A new output is one observer; a new series column is one source (a callable
-``source(t, u, info, row) -> dict`` that sees the columns before it) in a step's list.
+A step attaches the observers it wants to its problem's run: a series row per accepted
+step built from column sources, a progress line, profiles and fields at the output times
+(``Recorder``, in memory, is :class:`sealts.core.Recorder`). A new output is one observer; a
+new series column is one source (a callable ``source(t, u, info, row) -> dict`` that sees
+the columns before it) in a step's list.
 """
 from ..core import Observer
 

@@ -34,8 +34,8 @@ Terms work on a rank's *local* arrays: ``add_residual`` gets the local u, udot a
 
 Full vectors handed to and from a Problem (``u0``, what ``transient``, ``solve_steady``,
 the post-step hooks, the observers and ``gather`` get) are in serial order on every rank
-(a ``toAll`` scatter, reordered by the Numbering's ``natural``). A constrained row is written by its owner only;
-every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
+(a ``toAll`` scatter, reordered by the Numbering's ``natural``). A constrained row is
+written by its owner only; every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
 (the default parallel preconditioner is ``redundant`` LU).
 """
 import numpy as np
