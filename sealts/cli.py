@@ -128,6 +128,9 @@ def main(argv=None):
         print(USAGE)
         return 0 if argv else 2
     cmd, rest = argv[0], argv[1:]
+    if cmd in ("run", "ihl") and ("-h" in rest or "--help" in rest):
+        print(f"{USAGE}\n(PETSc's own options: sealts {cmd} SCENE.toml -help)")
+        return 0
     try:
         if cmd in ("run", "ihl"):
             return run(rest, cmd)

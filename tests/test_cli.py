@@ -100,3 +100,14 @@ def test_help_shows_petsc_help(tmp_path):
     r = sealts("run", "-o", str(tmp_path), "-help")
     assert r.returncode == 0, r.stderr
     assert "-snes_type" in r.stdout and "-ksp_type" in r.stdout
+
+
+def test_double_dash_help_prints_the_usage_and_runs_nothing(tmp_path):
+    """``sealts run --help`` (or ``-h``) used to pass the flag on to PETSc and run the default
+    scene for a minute; it prints the usage and where PETSc's options are listed, and writes
+    nothing."""
+    for flag in ("--help", "-h"):
+        r = sealts("run", flag, "-o", str(tmp_path / "out"))
+        assert r.returncode == 0, r.stderr
+        assert r.stdout.startswith("usage: sealts run") and "-help" in r.stdout
+    assert not (tmp_path / "out").exists()
