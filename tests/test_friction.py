@@ -11,6 +11,7 @@ import pytest
 
 from sealts.contact.asperity import ExponentialLaw
 from sealts.contact.friction import RodFriction, saturation
+from sealts.contact.rod_side import RodSide
 from sealts.contact.rigid import RodContact
 from sealts.mesh.seal_mesh import ORing, build_mesh
 from sealts.problem import Constraints, Problem, Term
@@ -30,10 +31,11 @@ def oring_chain(tmp_path, seed=0):
     n = 2 * X.shape[0]
     u = rng.uniform(-2e-4, 2e-4, n)
     r_rod = 25.0
-    rod = RodContact(X, chain, lambda t: r_rod, 2 * np.pi * r_rod, ExponentialLaw(H_MIX, P_MIX))
+    rod = RodContact(RodSide(X, chain, lambda t: r_rod, 2 * np.pi * r_rod),
+                     ExponentialLaw(H_MIX, P_MIX))
     # gaps 1.2e-4 apart, the nearest 1.5e-5 from the law's kinks at +-h_mix
     h = rng.permutation(np.linspace(-9.3e-4, 1.03e-3, chain.size))
-    u[rod.ur] = r_rod + h - X[chain, 0]
+    u[rod.side.ur] = r_rod + h - X[chain, 0]
     return X, chain, rod, u
 
 
@@ -69,13 +71,13 @@ def test_friction_jacobian(tmp_path):
     # step 1e-4 in them)
     x = np.array([-3.0, -0.9, -0.7, -0.2, 0.1, 0.4, 0.6, 0.8, 0.95, 2.0, 0.0, 0.3, -0.45,
                   -0.6, 1.3, 0.75, -1.7])
-    fric.anchors = fric.s(t) - u[rod.uz] - x[:chain.size] * GC
+    fric.anchors = fric.s(t) - u[rod.side.uz] - x[:chain.size] * GC
     assert np.allclose(fric.slip(t, u), x[:chain.size] * GC, rtol=0, atol=1e-15)
     problem = Problem(n, [fric])
     J = problem.jacobian_dense(t, u, np.zeros(n), 5.0)
     fd = np.zeros((n, n))
     cols = np.unique(fric.cols)
-    eps = {c: 2e-8 for c in rod.ur} | {c: 1e-8 for c in rod.uz}
+    eps = {c: 2e-8 for c in rod.side.ur} | {c: 1e-8 for c in rod.side.uz}
     for j in cols:
         e = np.zeros(n)
         e[j] = eps[j]
@@ -88,7 +90,7 @@ def test_friction_jacobian(tmp_path):
     # the check saw every kind of entry: contact, neighbours' lengths, stick and blend slopes
     p, _ = rod.pressure(t, u)
     assert (p > 0).sum() >= 10 and (p == 0).sum() >= 2
-    assert np.count_nonzero(J[np.ix_(rod.uz, rod.ur)]) >= 8
+    assert np.count_nonzero(J[np.ix_(rod.side.uz, rod.side.ur)]) >= 8
 
 
 @pytest.mark.parametrize("direction", [1.0, -1.0])
@@ -121,7 +123,7 @@ def test_stick_is_the_penalty_law(tmp_path):
     f1, f2 = fric.total(1e-3 * GC, u), fric.total(2e-3 * GC, u)
     assert f1 > 0 and f2 == pytest.approx(2 * f1, rel=1e-9)
     carried = u.copy()
-    carried[rod.uz] += 1e-3 * GC
+    carried[rod.side.uz] += 1e-3 * GC
     assert np.abs(fric.forces(1e-3 * GC, carried)).max() <= 1e-12 * np.abs(normal).max()
 
 
@@ -185,10 +187,12 @@ def test_spring_held_by_friction_stick_slip():
     stick u = c (s - a) / (k + c) while |gamma| <= gamma_crit / 2, slide u = +-F_c / k
     once |gamma| >= gamma_crit, the anchor a = s* - u* -+ gamma_crit after the turn at s*."""
     X = np.array([[1.0, 0.0], [1.0, 1.0]])
-    rod = RodContact(X, np.array([0, 1]), lambda t: 1.0, 1.0, ExponentialLaw(H_MIX, P_MIX))
+    rod = RodContact(RodSide(X, np.array([0, 1]), lambda t: 1.0, 1.0),
+                     ExponentialLaw(H_MIX, P_MIX))
     mu, k = 0.1, 1e3
     fric = RodFriction(rod, slip=lambda t: t, mu_s=mu)
-    problem = Problem(4, [fric, Springs(rod.uz, k)], constraints=Constraints(rod.ur, 0.0))
+    problem = Problem(4, [fric, Springs(rod.side.uz, k)],
+                      constraints=Constraints(rod.side.ur, 0.0))
     Fc = mu * P_MIX * 1.0 * 0.5
     c = Fc / GC
     path = np.concatenate([np.arange(0, 21), np.arange(19, -21, -1)]) * 1e-4
@@ -198,7 +202,7 @@ def test_spring_held_by_friction_stick_slip():
     for i, s in enumerate(path):
         u = problem.solve_steady(u, t=s)
         fric.update(s, u)
-        uz = u[rod.uz]
+        uz = u[rod.side.uz]
         assert uz[0] == pytest.approx(uz[1], abs=1e-15)
         if i > 0 and path[i] < path[i - 1] and path[i - 1] == path.max():
             a = path[i - 1] - u_prev - GC                  # the turn: anchored at +gamma_crit
@@ -250,6 +254,6 @@ def test_mounted_oring_dragged_by_the_rod(tmp_path):
     p, _ = model.rod.pressure(t1, u)
     gamma = fric.slip(t1, u)
     assert np.all(np.abs(gamma) <= GC * (1 + 1e-9))
-    uz = model.rod.uz
+    uz = model.side.uz
     carried = (u[uz] - u0[uz])[p > 0]
     assert carried.size > 10 and carried.mean() == pytest.approx(stroke, rel=0.01)

@@ -4,6 +4,7 @@ import pytest
 
 from conftest import scene
 from sealts.contact.asperity import ExponentialLaw
+from sealts.contact.rod_side import RodSide
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
 from sealts.mesh.layout import Layout, vertex_dofs
 from sealts.problem import Problem
@@ -67,8 +68,8 @@ def test_solid_and_contact_terms_do_not_care_where_their_dofs_are(mesh):
 
     def terms(udofs):
         return [SolidTerm(X, conn, mat, True, udofs=udofs),
-                RodContact(X, chain, lambda t: X[chain, 0].min() + 0.01, 2 * np.pi * 25.0,
-                           ExponentialLaw(7e-4, 15.0), udofs=udofs),
+                RodContact(RodSide(X, chain, lambda t: X[chain, 0].min() + 0.01,
+                                   2 * np.pi * 25.0, udofs=udofs), ExponentialLaw(7e-4, 15.0)),
                 GrooveContact(X, mesh.boundary_nodes(), trib, True, lambda t: rg,
                               lambda t: walls, udofs=udofs)]
 

@@ -7,6 +7,7 @@ import pytest
 
 from conftest import ROOT, config_text, scene
 from sealts.contact.asperity import ExponentialLaw
+from sealts.contact.rod_side import RodSide
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
 from sealts.io.results import Results
 from sealts.mesh.seal_mesh import ORing, build_mesh
@@ -41,7 +42,7 @@ def test_contact_and_stabilisation_jacobians(tmp_path, axisym):
     rng = np.random.default_rng(0)
     u = rng.uniform(-2e-4, 2e-4, n)
     # put the rod and walls where nodes sit in and near contact
-    rod = RodContact(X, chain, lambda t: X[chain, 0].min() + 2e-4 * t, 157.0,
+    rod = RodContact(RodSide(X, chain, lambda t: X[chain, 0].min() + 2e-4 * t, 157.0),
                      ExponentialLaw(7e-4, 15.0))
     groove = GrooveContact(X, m.boundary_nodes(), trib, axisym,
                            lambda t: X[:, 0].max() - 1e-4 * t,
@@ -171,9 +172,9 @@ def test_axisymmetric_side_walls_balance_and_20_percent_squeeze(tmp_path):
     assert g["wall_pressure_side"] == pytest.approx(-g["wall_atmosphere_side"],
                                                     rel=1e-6, abs=1e-6)
     assert r["h_min"] > -7e-4   # no node deeper than h_mix into the rod
-    h = model.rod.gap(state.t, u)
+    h = model.side.gap(state.t, u)
     assert min(h[0], h[-1]) > 0.1
-    off = model.off_rod
+    off = model.side.off
     assert (model.mesh.X[off, 0] + u[model.udofs[off, 0]]).min() > 25.0 + 0.15
 
 

@@ -46,6 +46,7 @@ import sys
 import numpy as np
 from petsc4py import PETSc
 from sealts.contact.asperity import ExponentialLaw
+from sealts.contact.rod_side import RodSide
 from sealts.contact.rigid import GrooveContact, RodContact, tributary_lengths
 from sealts.mesh.partition import Partition
 from sealts.mesh.seal_mesh import SealMesh
@@ -81,8 +82,8 @@ def boundary(udofs):
     load = PressureLoad(X, conn, lambda t: 0.7, True, start, udofs=udofs)
     load.s0[:] = 0.0
     load.s1[:] = np.linspace(0.0, 1.0, load.m)
-    return [RodContact(X, chain, lambda t: X[chain, 0].min() + 0.01, 2 * np.pi * 25.0,
-                       ExponentialLaw(7e-4, 15.0), udofs=udofs),
+    return [RodContact(RodSide(X, chain, lambda t: X[chain, 0].min() + 0.01, 2 * np.pi * 25.0,
+                               udofs=udofs), ExponentialLaw(7e-4, 15.0)),
             GrooveContact(X, mesh.boundary_nodes(), trib, True, lambda t: rg,
                           lambda t: walls, udofs=udofs), load]
 

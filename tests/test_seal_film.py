@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from conftest import central_differences
+from sealts.contact.rod_side import RodSide
 from sealts.film.flow_factors import FlowFactors
 from sealts.film.quantities import shear_stress
 from sealts.film.reynolds_fv import ControlVolumeScheme, control_volumes, element_fluxes
@@ -39,11 +40,10 @@ def coarse(tmp_path):
 def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=80.0,
               surface_normal=False, shear=False):
     ff = FlowFactors.patir_cheng(RQ, 1.0) if factors == "patir-cheng" else FlowFactors.none()
-    return SealFilmTerm(mesh.X, layout.rod_nodes, layout.film_dofs, rod, lambda t: v, ETA,
-                        lambda t: 1.0 + 0.1 * t, 0.2, AREA, ff=ff, h_floor=H_FLOOR,
-                        squeeze=squeeze, pressurised_end=end, udofs=layout.udofs,
-                        rod_rate=rod_rate, surface_normal=surface_normal, shear=shear,
-                        beta=0.3)
+    side = RodSide(mesh.X, layout.rod_nodes, rod, AREA, udofs=layout.udofs, rod_rate=rod_rate)
+    return SealFilmTerm(side, layout.film_dofs, lambda t: v, ETA, lambda t: 1.0 + 0.1 * t,
+                        0.2, ff=ff, h_floor=H_FLOOR, squeeze=squeeze, pressurised_end=end,
+                        surface_normal=surface_normal, shear=shear, beta=0.3)
 
 
 def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5, h_mean=1.7e-3, p_uniform=False):
@@ -264,7 +264,8 @@ def test_pressurised_oring_with_film(tmp_path):
     u[ud] = u_mounted[model.udofs]
     # the mounted model's terms, on the layout with the film pressure field
     solid = SolidTerm(X, mesh.conn, model.material, True, udofs=ud, heating=ramp)
-    rod_c = RodContact(X, chain, model.rod_radius, model.rod.area, model.law, udofs=ud)
+    rod_side = model.side.on(ud)
+    rod_c = RodContact(rod_side, model.law)
     g = model.groove
     groove = GrooveContact(X, g.nodes, np.ones(X.shape[0]), True, model.groove_radius,
                            g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
@@ -274,9 +275,8 @@ def test_pressurised_oring_with_film(tmp_path):
     t0, t_mid, t1 = state.protocol.pressurise               # after the mount, as step 2
     p_in = lambda t: ramp(t - t0)                           # 0 -> 1 MPa over t0 .. t0 + 1
     velocity = [0.0]
-    film = SealFilmTerm(X, chain, lay.film_dofs, model.rod_radius, lambda t: velocity[0],
-                        1e-8, p_in, 0.0, model.rod.area, udofs=ud, squeeze=False,
-                        pressurised_end="min_z", surface_normal=True)
+    film = SealFilmTerm(rod_side, lay.film_dofs, lambda t: velocity[0], 1e-8, p_in, 0.0,
+                        squeeze=False, pressurised_end="min_z", surface_normal=True)
     side = mesh.nodes("pressure_side")
     load = PressureLoad(X, mesh.conn, p_in, True, side[np.argmin(X[side, 1])], udofs=ud)
     flank = {tuple(sorted(e)) for e in mesh.edges["pressure_side"]}
@@ -299,7 +299,7 @@ def test_pressurised_oring_with_film(tmp_path):
         u = static.solve_steady(u, t1)
         p = u[lay.film_dofs]
         results.append(dict(p=p, q=film.flows(t1, u, np.zeros(lay.n)),
-                            h_min=rod_c.gap(t1, u).min(), asperity=rod_c.forces(t1, u).sum(),
+                            h_min=rod_side.gap(t1, u).min(), asperity=rod_c.forces(t1, u).sum(),
                             film=film.forces(t1, u).sum(),
                             shear=film.shear_forces(t1, u).sum()))
         if v == 0.0:

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from conftest import central_differences
+from sealts.contact.rod_side import RodSide
 from sealts.film.flow_factors import FlowFactors
 from sealts.film.paper_scheme import Y0_ANCHOR, PaperScheme
 from sealts.film.quantities import shear_stress
@@ -29,10 +30,10 @@ def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=V,
     """The term on test_seal_film's coarse O-ring, with (V_in, V_out, c0, qd) appended."""
     ff = FlowFactors.patir_cheng(RQ, 1.0) if factors == "patir-cheng" else FlowFactors.none()
     n = layout.n
-    term = SealPaperFilmTerm(mesh.X, layout.rod_nodes, layout.film_dofs, [n + 2, n + 3], rod,
-                             lambda t: v, ETA, p_first_of, 0.2, AREA, ff=ff, h_floor=H_FLOOR,
-                             squeeze=squeeze, pressurised_end=end, udofs=layout.udofs,
-                             rod_rate=rod_rate, surface_normal=surface_normal, shear=shear,
+    side = RodSide(mesh.X, layout.rod_nodes, rod, AREA, udofs=layout.udofs, rod_rate=rod_rate)
+    term = SealPaperFilmTerm(side, layout.film_dofs, [n + 2, n + 3], lambda t: v, ETA,
+                             p_first_of, 0.2, ff=ff, h_floor=H_FLOOR, squeeze=squeeze,
+                             pressurised_end=end, surface_normal=surface_normal, shear=shear,
                              alpha=alpha, beta=0.3)
     return term, PaperLeakageTerm(term, [n, n + 1]), n + 4
 
@@ -352,7 +353,7 @@ def test_paper_stroke_conserves_the_film_volume(strokes):
         m = 0.5 * (control_volumes(step.film.film(ta, Ua)[0])
                    + control_volumes(step.film.film(tb, Ub)[0]))
         dh = step.film.film(tb, Ub)[1] - step.film.film(ta, Ua)[1]
-        growth += step.film.area * float(m @ dh)
+        growth += step.film.side.area * float(m @ dh)
     moved = max(abs(v_in), abs(v_out))
     assert moved > 0.05
     assert v_in - v_out == pytest.approx(growth, abs=1e-3 * moved)

@@ -41,7 +41,7 @@ def test_stroke_conserves_the_film_volume(stroke):
     for (ta, Ua), (tb, Ub) in zip(states, states[1:]):
         m = 0.5 * (control_volumes(step, Ua) + control_volumes(step, Ub))
         dh = step.film.film(tb, Ub)[1] - step.film.film(ta, Ua)[1]
-        growth += step.film.area * float(m @ dh)
+        growth += step.film.side.area * float(m @ dh)
     moved = max(abs(v_in), abs(v_out))
     assert moved > 0.05                                    # mm^3: the check has something
     assert v_in - v_out == pytest.approx(growth, abs=1e-3 * moved)

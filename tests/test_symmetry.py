@@ -251,7 +251,7 @@ def test_terms_are_mirror_equivariant(mounted):
     # rod friction: elastic slips gamma = s - u_z - a of -2..2 gamma_crit
     rf_p, rf_m = sp.friction, sm.friction
     gc = rf_p.gamma_crit
-    rf_p.anchors = (rf_p.s(t) - U[rf_p.contact.uz] - rng.uniform(-2, 2, chain.size) * gc)
+    rf_p.anchors = (rf_p.s(t) - U[rf_p.side.uz] - rng.uniform(-2, 2, chain.size) * gc)
     rf_m.anchors = -rf_p.anchors[::-1]
     # groove friction: anchors within a few gamma_crit of the node, per groove node
     gf_p, gf_m = sp.groove_friction, sm.groove_friction

@@ -10,9 +10,9 @@ rod-side nodes like the normal force (Eq. 45), it gives node i the axial force
 
     F_i = tau_s,i A L_i,     L_i = (z_{i+1} - z_{i-1}) / 2   (current axial positions),
 
-p_s, A and L_i exactly as :class:`sealts.contact.rigid.RodContact` computes them (this term
-calls its methods). Sign: F_i > 0 pushes the seal in +z; a rod moving in +z drags the seal
-along (gamma > 0, F > 0).
+p_s from :class:`sealts.contact.rigid.RodContact`, A and L_i from its rod side
+(:class:`sealts.contact.rod_side.RodSide`), exactly as the normal force. Sign: F_i > 0
+pushes the seal in +z; a rod moving in +z drags the seal along (gamma > 0, F > 0).
 
 Slip with a history anchor (elastic-slip, "penalty" friction as in ABAQUS): the rod's axial
 displacement s(t) (mm, e.g. the integral of v(t); +z for v > 0) against node i's own,
@@ -118,7 +118,7 @@ class RodFriction(Term):
 
     def __init__(self, contact, slip, mu_s=0.1, gamma_crit=1e-4, blend=0.5, anchors=None):
         """``contact``: the :class:`sealts.contact.rigid.RodContact` whose asperity pressure
-        and tributary lengths the friction uses; ``slip``: s(t), the rod's axial
+        (and rod side: chain, lengths, A) the friction uses; ``slip``: s(t), the rod's axial
         displacement (mm, +z; number or function of t); ``mu_s``: the friction coefficient
         (number or function of t); ``gamma_crit``: the elastic slip at which friction
         reaches mu_s p_s (mm); ``blend``: the fraction of gamma_crit over which phi turns
@@ -129,24 +129,24 @@ class RodFriction(Term):
         self.s = of_time(slip)
         self.mu = of_time(mu_s)
         self.gamma_crit, self.blend = float(gamma_crit), float(blend)
-        m = c.chain.size
+        self.side = sd = c.side
+        m = sd.m
         self.anchors = np.zeros(m) if anchors is None else np.array(anchors, float)
         if self.anchors.shape != (m,):
             raise ValueError("anchors must give one value per chain node")
-        uz = c.uz
+        uz = sd.uz
         # d(-F_i)/d: u_r,i (p_s), u_z of the upper and lower neighbour (L_i), u_z,i (gamma)
         self.rows = np.concatenate([uz, uz, uz, uz]).astype(np.int64)
-        self.cols = np.concatenate([c.ur, uz[c.hi], uz[c.lo], uz]).astype(np.int64)
+        self.cols = np.concatenate([sd.ur, uz[sd.hi], uz[sd.lo], uz]).astype(np.int64)
 
     # ---- state -----------------------------------------------------------------------------
     def slip(self, t, u):
         """gamma_i = s(t) - u_z,i - a_i (mm)."""
-        return self.s(t) - u[self.contact.uz] - self.anchors
+        return self.s(t) - u[self.side.uz] - self.anchors
 
     def _evaluate(self, t, u):
-        c = self.contact
-        p, dp = c.pressure(t, u)
-        L = c.lengths(u)
+        p, dp = self.contact.pressure(t, u)
+        L = self.side.lengths(u)
         phi, dphi = saturation(self.slip(t, u) / self.gamma_crit, self.blend)
         return p, dp, L, phi, dphi
 
@@ -158,7 +158,7 @@ class RodFriction(Term):
     def forces(self, t, u):
         """Axial friction force on each chain node (N, +z on the seal), F_i = tau_s,i A L_i."""
         p, _, L, phi, _ = self._evaluate(t, u)
-        return self.mu(t) * p * phi * self.contact.area * L
+        return self.mu(t) * p * phi * self.side.area * L
 
     def total(self, t, u):
         """Total axial friction force on the seal (N, +z)."""
@@ -168,7 +168,7 @@ class RodFriction(Term):
     def reset(self, t, u):
         """Zero elastic slip at every node: a_i = s(t) - u_z,i (e.g. when friction starts,
         after the frictionless mounting)."""
-        self.anchors = self.s(t) - np.asarray(u, float)[self.contact.uz]
+        self.anchors = self.s(t) - np.asarray(u, float)[self.side.uz]
 
     def update(self, t, u):
         """Return mapping after an accepted step at (t, u): cap |gamma_i| at gamma_crit
@@ -181,7 +181,7 @@ class RodFriction(Term):
         p, _ = self.contact.pressure(t, u)
         touching = p > 0.0
         kept[~touching] = 0.0
-        new = self.s(t) - u[self.contact.uz] - kept
+        new = self.s(t) - u[self.side.uz] - kept
         moved = np.abs(new - self.anchors)[touching]
         self.anchors = new
         return float(moved.max()) if moved.size else 0.0
@@ -192,13 +192,12 @@ class RodFriction(Term):
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
-        np.subtract.at(f, self.contact.uz, self.forces(t, u))
+        np.subtract.at(f, self.side.uz, self.forces(t, u))
 
     def jacobian_values(self, t, u, udot, shift):
         p, dp, L, phi, dphi = self._evaluate(t, u)
-        c = self.contact
-        k = self.mu(t) * c.area
-        half = c.half
+        k = self.mu(t) * self.side.area
+        half = self.side.half
         # F = k p(h) L phi(gamma / gamma_crit); the residual subtracts F
         return -np.concatenate([k * dp * L * phi,
                                 k * p * half * phi,

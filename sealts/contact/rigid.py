@@ -1,9 +1,10 @@
 """Contact of seal boundary nodes with rigid analytical surfaces.
 
-Rod (``RodContact``): a cylinder of radius r_rod(t). The separation of rod-side node i is
-h_i = r_i + u_r,i - r_rod (paper Eq. 18). Its normal law is the asperity law of the film
-module, p_s(h) (Eq. 44), so the same surface carries the film in the coupled problem. The
-nodal force (Eq. 45) acts radially outward on the seal:
+Rod (``RodContact``): a cylinder of radius r_rod(t) against the seal's rod side
+(:class:`sealts.contact.rod_side.RodSide`, whose gap h_i = r_i + u_r,i - r_rod is paper
+Eq. 18). Its normal law is an asperity law p_s(h) (:mod:`sealts.contact.asperity`, Eq. 44 by
+default), on the same rod side as the film in the coupled problem. The nodal force (Eq. 45)
+acts radially outward on the seal:
 
     f_r,i = p_s(h_i) A L_i,   L_i = (z_{i+1} - z_{i-1}) / 2  (current axial positions, Eq. 30),
 
@@ -44,7 +45,7 @@ def node_contact_pressure(n_nodes, groove, rod, t, u):
     pc = np.zeros(n_nodes)
     pc[groove.nodes] = groove.node_pressures(t, u)
     p_rod, _ = rod.pressure(t, u)
-    np.maximum.at(pc, rod.chain, p_rod)
+    np.maximum.at(pc, rod.side.chain, p_rod)
     return pc
 
 
@@ -74,47 +75,32 @@ def softplus_penalty(g, k, delta):
 
 
 class RodContact(Term):
-    def __init__(self, X, chain, r_rod, area, law, udofs=None):
-        """``chain``: rod-side nodes ordered by z; ``r_rod(t)`` the rod radius; ``law``: the
-        asperity law (:mod:`sealts.contact.asperity`); ``udofs``: node -> (u_r, u_z) dofs
-        (:class:`sealts.mesh.layout.Layout`)."""
-        self.X, self.chain, self.r_rod, self.area = X, np.asarray(chain), r_rod, area
-        self.law = law
-        c = self.chain
-        m = c.size
-        udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
-        self.ur, self.uz = udofs[c, 0], udofs[c, 1]
-        # neighbours in the chain used for L_i (one-sided at the ends)
-        self.lo = np.concatenate([[0], np.arange(m - 1)])
-        self.hi = np.concatenate([np.arange(1, m), [m - 1]])
-        self.half = np.full(m, 0.5)  # the L_i then add up to the chain's axial extent
-        self.rows = np.concatenate([self.ur, self.ur, self.ur])
-        self.cols = np.concatenate([self.ur, self.uz[self.hi], self.uz[self.lo]])
-
-    def gap(self, t, u):
-        return self.X[self.chain, 0] + u[self.ur] - self.r_rod(t)
-
-    def lengths(self, u):
-        z = self.X[self.chain, 1] + u[self.uz]
-        return self.half * (z[self.hi] - z[self.lo])
+    def __init__(self, side, law):
+        """``side``: the :class:`sealts.contact.rod_side.RodSide` (chain, dofs, gap,
+        lengths, A); ``law``: the asperity law (:mod:`sealts.contact.asperity`)."""
+        self.side, self.law = side, law
+        s = side
+        self.rows = np.concatenate([s.ur, s.ur, s.ur])
+        self.cols = np.concatenate([s.ur, s.uz[s.hi], s.uz[s.lo]])
 
     def pressure(self, t, u):
         """(p_s, dp_s/dh) of the asperity law at each chain node's gap (MPa, MPa/mm)."""
-        return self.law.pressure(self.gap(t, u))
+        return self.law.pressure(self.side.gap(t, u))
 
     def forces(self, t, u):
         """Radial contact force on each chain node (N)."""
         p, _ = self.pressure(t, u)
-        return p * self.area * self.lengths(u)
+        return p * self.side.area * self.side.lengths(u)
 
     def add_residual(self, t, u, udot, f):
-        np.subtract.at(f, self.ur, self.forces(t, u))
+        np.subtract.at(f, self.side.ur, self.forces(t, u))
 
     def jacobian_values(self, t, u, udot, shift):
         p, dp = self.pressure(t, u)
-        L = self.lengths(u)
-        a = self.area
-        return np.concatenate([-dp * a * L, -p * a * self.half, p * a * self.half])
+        s = self.side
+        L = s.lengths(u)
+        a = s.area
+        return np.concatenate([-dp * a * L, -p * a * s.half, p * a * s.half])
 
 
 class GrooveContact(Term):

@@ -8,26 +8,24 @@ post-step hook ``accepted`` checks every accepted state.
 """
 import numpy as np
 
-from ..core import SolveError, Term, of_time
+from ..core import SolveError, Term
 
 
 class RodSideGuard(Term):
-    def __init__(self, X, nodes, udofs, r_rod, depth, note=None):
-        """``nodes``: the boundary nodes off the rod side; ``udofs`` (n_nodes, 2): their
-        displacement dofs in the problem's serial numbering; ``r_rod``: the rod radius (mm,
-        number or function of t); ``depth``: how far (mm) a node may enter the rod;
+    def __init__(self, side, depth, note=None):
+        """``side``: the :class:`sealts.contact.rod_side.RodSide` (its ``off`` nodes, their
+        dofs and the rod radius); ``depth``: how far (mm) a node may enter the rod;
         ``note(u)``: more words for the message (e.g. the rolling angle), or None."""
-        self.X, self.nodes = X, np.asarray(nodes, np.int64)
-        self.udofs = np.asarray(udofs, np.int64)
-        self.r_rod, self.depth, self.note = of_time(r_rod), float(depth), note
+        self.side, self.depth, self.note = side, float(depth), note
 
     def accepted(self, t, u):
-        off = self.nodes
-        depth = self.r_rod(t) - (self.X[off, 0] + u[self.udofs[off, 0]])
+        depth = self.side.off_depth(t, u)
+        if depth.size == 0:
+            return
         k = int(np.argmax(depth))
         if depth[k] <= self.depth:
             return
         why = self.note(u) if self.note is not None else ""
-        raise SolveError(f"at t = {t:.6g} node {off[k]} off the rod side is "
+        raise SolveError(f"at t = {t:.6g} node {self.side.off[k]} off the rod side is "
                          f"{depth[k] * 1e3:.3g} um inside the rod: the rod side no longer "
                          f"covers the contact{why}")

@@ -1,7 +1,8 @@
 """The Reynolds film on the deforming seal surface: the coupled soft-EHL term (issue 5).
 
 The film nodes are the vertices of the seal's ``rod_side`` chain (ordered by reference z) at
-their *current* axial position, and the gap follows the seal's radial displacement:
+their *current* axial position, and the gap follows the seal's radial displacement (the rod
+side's geometry, :class:`sealts.contact.rod_side.RodSide`):
 
     y_i = Z_i + u_z,i                                             (Eq. 25)
     h_i = R_i + u_r,i - r(t)                                      (Eq. 18)
@@ -70,9 +71,8 @@ Exact Jacobian (the chain rule through the gap provider, docs/design.md):
 import numba
 import numpy as np
 
-from ..mesh.layout import vertex_dofs
-from ..core import Term, of_time
-from .flow_factors import FlowFactors
+from ..core import Term
+from .chain_film import ChainFilm
 from .gap import h_eff
 from .reynolds_fv import conductance, element_fluxes, storage
 
@@ -88,37 +88,7 @@ def nodal_conductance(h, eta, h_floor, model, par, th, tpp, tps):
     return out
 
 
-
-def set_chain(term, X, chain, pdofs, udofs, pressurised_end, r_rod, v, rod_rate, eta, area,
-              h_floor, squeeze, ff, p_in, p_out):
-    """The film's chain and parameters on ``term`` (both coupled film schemes; arguments as
-    :class:`SealFilmTerm`'s): X, chain, m, the nodes' u_r, u_z and film-pressure dofs, their
-    reference R, Z, and the rod, fluid and end pressures. Returns m."""
-    if pressurised_end not in ("min_z", "max_z"):
-        raise ValueError(f"pressurised_end must be 'min_z' or 'max_z', got {pressurised_end!r}")
-    term.X = np.asarray(X, float)
-    term.chain = np.asarray(chain, np.int64)
-    m = term.m = term.chain.size
-    if m < 3:
-        raise ValueError("the film needs at least three chain nodes")
-    udofs = vertex_dofs(term.X.shape[0]) if udofs is None else np.asarray(udofs)
-    term.ur, term.uz = udofs[term.chain, 0], udofs[term.chain, 1]
-    term.pd = np.asarray(pdofs, np.int64)
-    if term.pd.shape != (m,):
-        raise ValueError("pdofs must give one film-pressure dof per chain node")
-    term.R, term.Z = term.X[term.chain, 0], term.X[term.chain, 1]
-    term.r_rod, term.v = r_rod, of_time(v)
-    term.rod_rate = of_time(0.0 if rod_rate is None else rod_rate)
-    term.eta, term.area, term.h_floor, term.squeeze = eta, area, h_floor, squeeze
-    term.ff = FlowFactors.none() if ff is None else ff
-    first = pressurised_end == "min_z"
-    term.p_first = of_time(p_in if first else p_out)
-    term.p_last = of_time(p_out if first else p_in)
-    term.pressurised_end = pressurised_end
-    return m
-
-
-class SealFilmTerm(Term):
+class SealFilmTerm(ChainFilm):
     """The film on the seal's rod-side chain, coupled to the seal displacements.
 
     Owns the rows ``pdofs`` (film pressures, in chain order) and adds to the u_r rows of the
@@ -126,27 +96,22 @@ class SealFilmTerm(Term):
     pressures, u_r and u_z.
     """
 
-    def __init__(self, X, chain, pdofs, r_rod, v, eta, p_in, p_out, area, ff=None,
-                 h_floor=1e-5, squeeze=True, pressurised_end="min_z", udofs=None,
-                 rod_rate=None, h_ref=1e-3, surface_normal=False, shear=True, beta=0.5):
-        """``X``: reference coordinates (r, z) of the mesh nodes; ``chain``: the rod-side
-        nodes ordered by z (``mesh.chain("rod_side")``); ``pdofs``: their film-pressure dofs
-        in the same order (``Layout.film_dofs``); ``udofs``: node -> (u_r, u_z) dofs
-        (``Layout.udofs``). ``r_rod(t)`` the rod radius (mm) and ``rod_rate(t)`` its rate
-        (default 0), ``v(t)`` the rod's axial velocity (mm/s); ``eta`` the viscosity
-        (MPa s); ``p_in``, ``p_out`` (MPa, numbers or functions of t) at the pressurised end
-        (``pressurised_end``: ``"min_z"``, the chain's first node, or ``"max_z"``) and at the
-        other; ``area``: A of Eq. 31 (mm); ``ff``: :class:`FlowFactors` (none by default);
-        ``h_floor`` (mm): the gap regularisation of :mod:`sealts.film.gap`; ``squeeze``:
-        with the dh/dt term; ``surface_normal``: also the axial part of the pressure on the
-        seal's inclined surface; ``shear``: the fluid shear force (Eq. 32-34) with the
-        weight ``beta`` of Eq. 33 (module docstring). The film rows are scaled by their
-        diagonal for the reference chain at a uniform gap ``h_ref`` (mm) until
-        :meth:`set_row_scale` fixes them at a state."""
-        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end, r_rod, v, rod_rate, eta,
-                      area, h_floor, squeeze, ff, p_in, p_out)
-
-        ur, uz, pd = self.ur, self.uz, self.pd
+    def __init__(self, side, pdofs, v, eta, p_in, p_out, ff=None, h_floor=1e-5,
+                 squeeze=True, pressurised_end="min_z", h_ref=1e-3, surface_normal=False,
+                 shear=True, beta=0.5):
+        """``side``: the :class:`sealts.contact.rod_side.RodSide` (chain, dofs, rod, A);
+        ``pdofs``, ``v``, ``eta``, ``p_in``, ``p_out``, ``ff``, ``h_floor``, ``squeeze``,
+        ``pressurised_end``: as :class:`sealts.film.chain_film.ChainFilm`;
+        ``surface_normal``: also the axial part of the pressure on the seal's inclined
+        surface; ``shear``: the fluid shear force (Eq. 32-34) with the weight ``beta`` of
+        Eq. 33 (module docstring). The film rows are scaled by their diagonal for the
+        reference chain at a uniform gap ``h_ref`` (mm) until :meth:`set_row_scale` fixes
+        them at a state."""
+        super().__init__(side, pdofs, v, eta, p_in, p_out, ff, h_floor, squeeze,
+                         pressurised_end)
+        m = side.m
+        ur, uz, pd = side.ur, side.uz, self.pd
+        lo, hi = side.lo, side.hi
         a = np.arange(m - 1)
         b = a + 1
         # element flows: rows p_a (+q) and p_b (-q), columns p_a, p_b, u_r,a, u_r,b, u_z,a, u_z,b
@@ -158,19 +123,17 @@ class SealFilmTerm(Term):
         i = np.arange(1, m - 1)                                       # interior nodes
         self._rows_film = np.concatenate([r6.ravel()[self._ekeep], i, i, i])
         film_cols = np.concatenate([c6.ravel()[self._ekeep], ur[i], uz[i + 1], uz[i - 1]])
-        # nodal radial forces, neighbours for L_i one-sided at the ends (as RodContact)
-        self.lo = np.concatenate([[0], np.arange(m - 1)])
-        self.hi = np.concatenate([np.arange(1, m), [m - 1]])
+        # nodal radial forces, the rod side's neighbours for L_i
         self.surface_normal = surface_normal
         rows = [pd[self._rows_film], [pd[0], pd[-1]], ur, ur, ur]
-        cols = [film_cols, [pd[0], pd[-1]], pd, uz[self.hi], uz[self.lo]]
+        cols = [film_cols, [pd[0], pd[-1]], pd, uz[hi], uz[lo]]
         if surface_normal:
             rows += [uz, uz, uz]
-            cols += [pd, ur[self.hi], ur[self.lo]]
+            cols += [pd, ur[hi], ur[lo]]
         self.shear, self.beta = shear, beta
         if shear:  # the pattern of the shear force, from the code that computes its values
             dummy = np.zeros(m)
-            _, srows, scols, _ = self._shear(0.0, self.Z, dummy + 1e-3, dummy, dummy, 1.0,
+            _, srows, scols, _ = self._shear(0.0, side.Z, dummy + 1e-3, dummy, dummy, 1.0,
                                              v=1.0)
             rows.append(uz[srows])
             cols.append(scols)
@@ -178,31 +141,11 @@ class SealFilmTerm(Term):
         self.cols = np.concatenate(cols).astype(np.int64)
         self.row_scale = self._reference_row_scale(h_ref)
 
-    # ---- the state on the chain ----------------------------------------------------------
-    def _ffargs(self):
-        f = self.ff
-        return f.model, f.par, f.table_h, f.table_pp, f.table_ps
-
-    def film(self, t, u, udot=None):
-        """(y, h, dh/dt, p) on the chain: current axial positions, gaps (Eq. 18), squeeze
-        rates (zero with the squeeze term off or without U') and film pressures."""
-        y = self.Z + u[self.uz]
-        h = self.R + u[self.ur] - self.r_rod(t)
-        if self.squeeze and udot is not None:
-            hd = udot[self.ur] - self.rod_rate(t)
-        else:
-            hd = np.zeros(self.m)
-        return y, h, hd, np.asarray(u[self.pd], float)
-
-    def lengths(self, y):
-        """Tributary lengths L_i (mm), one-sided at the ends (Eq. 30)."""
-        return 0.5 * (y[self.hi] - y[self.lo])
-
     def _reference_row_scale(self, h_ref):
         """1 / diagonal of the balance rows on the reference chain at the uniform gap h_ref."""
         ik = conductance(h_ref, self.eta, self.h_floor, *self._ffargs())[0]
-        d = 1.0 / (np.diff(self.Z) * ik)                               # 1 / (L I1) per element
-        s = np.ones(self.m)
+        d = 1.0 / (np.diff(self.side.Z) * ik)                          # 1 / (L I1) per element
+        s = np.ones(self.side.m)
         s[1:-1] = 1.0 / (d[1:] + d[:-1])
         return s
 
@@ -211,7 +154,7 @@ class SealFilmTerm(Term):
         y, h, hd, p = self.film(t, u, udot)
         _, dqa, dqb, _, _ = element_fluxes(y, h, p, self.v(t), self.eta, self.h_floor,
                                            *self._ffargs())
-        self.row_scale = np.ones(self.m)
+        self.row_scale = np.ones(self.side.m)
         self.row_scale[1:-1] = 1.0 / (dqa[1:] - dqb[:-1])
 
     def _fluxes(self, t, y, h, hd, p, v=None):
@@ -238,30 +181,14 @@ class SealFilmTerm(Term):
         _, q, s = self.balance(t, u, udot)
         q_first, q_last = q[0] + s[0], q[-1] - s[-1]     # in +y at the two ends
         if self.pressurised_end == "min_z":
-            return self.area * q_first, self.area * q_last
-        return -self.area * q_last, -self.area * q_first
-
-    def forces(self, t, u):
-        """Radial film force on each chain node (N), F_r,i = p_i A L_i (Eq. 29-31)."""
-        y = self.Z + u[self.uz]
-        return u[self.pd] * self.area * self.lengths(y)
-
-    def axial_forces(self, t, u):
-        """Axial film force on each chain node (N): F_z,i = -p_i A (r_hi - r_lo)/2 with
-        ``surface_normal``, else zero."""
-        if not self.surface_normal:
-            return np.zeros(self.m)
-        r = self.R + u[self.ur]
-        return -u[self.pd] * self.area * self.lengths(r)
-
-    def pressure(self, u):
-        return np.asarray(u[self.pd], float)
+            return self.side.area * q_first, self.side.area * q_last
+        return -self.side.area * q_last, -self.side.area * q_first
 
     def _shear(self, t, y, h, hd, p, shift, v=None, fluxes=None):
         """Fluid shear force on the chain nodes (Eq. 32-34, N, +y) and the COO parts of
         d(-F_s)/dU + shift d(-F_s)/dU': (F_s, rows as chain indices, cols, values).
         ``fluxes``: :meth:`_fluxes` at this state, if already known."""
-        m, ur, uz, pd, A = self.m, self.ur, self.uz, self.pd, self.area
+        m, ur, uz, pd, A = self.side.m, self.side.ur, self.side.uz, self.pd, self.side.area
         v = self.v(t) if v is None else v
         eta, beta = self.eta, self.beta
         if fluxes is None:
@@ -288,7 +215,7 @@ class SealFilmTerm(Term):
         i = np.arange(m)
         a = np.arange(m - 1)
         b = a + 1
-        rows, cols, vals = [i, i, i], [ur, uz[self.hi], uz[self.lo]], \
+        rows, cols, vals = [i, i, i], [ur, uz[self.side.hi], uz[self.side.lo]], \
             [AL * dtau_dh, 0.5 * A * tau, -0.5 * A * tau]
         # q_i through the element flows: mean of two inside, the end elements' own at the ends
         wa = np.where(a == 0, 1.0, 0.5) * cq[a]
@@ -336,11 +263,12 @@ class SealFilmTerm(Term):
         r[0] = p[0] - self.p_first(t)
         r[-1] = p[-1] - self.p_last(t)
         np.add.at(f, self.pd, r)
-        np.subtract.at(f, self.ur, self.forces(t, u))
+        np.subtract.at(f, self.side.ur, self.forces(t, u))
         if self.surface_normal:
-            np.subtract.at(f, self.uz, self.axial_forces(t, u))
+            np.subtract.at(f, self.side.uz, self.axial_forces(t, u))
         if self.shear:
-            np.subtract.at(f, self.uz, self._shear(t, y, h, hd, p, 0.0, fluxes=fluxes)[0])
+            np.subtract.at(f, self.side.uz,
+                           self._shear(t, y, h, hd, p, 0.0, fluxes=fluxes)[0])
 
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
@@ -349,17 +277,17 @@ class SealFilmTerm(Term):
         dqL = (p[1:] - p[:-1]) * dqa / L                 # dq/dL = dp / (L^2 I1)
         d = np.stack([dqa, dqb, dha, dhb, -dqL, dqL], 1)  # per element, columns as the pattern
         ev = np.stack([d, -d], 1).ravel()[self._ekeep]
-        i = np.arange(1, self.m - 1)
+        i = np.arange(1, self.side.m - 1)
         M = 0.5 * (y[i + 1] - y[i - 1])
         rate = ds_dhd[i] / M * hd[i]                     # h_eff'(h_i) dh_i/dt = dS_i/dM_i
         shift_hd = shift if (self.squeeze and udot is not None) else 0.0
         sv = np.concatenate([ds_dh[i] + shift_hd * ds_dhd[i], 0.5 * rate, -0.5 * rate])
         film = np.concatenate([ev, sv]) * self.row_scale[self._rows_film]
-        A = self.area
+        A = self.side.area
         Li = self.lengths(y)
         vals = [film, [1.0, 1.0], -A * Li, -0.5 * A * p, 0.5 * A * p]
         if self.surface_normal:
-            dr = self.lengths(self.R + u[self.ur])
+            dr = self.lengths(self.side.R + u[self.side.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
         if self.shear:
             vals.append(self._shear(t, y, h, hd, p, shift_hd,
@@ -386,10 +314,10 @@ class LeakageTerm(Term):
         self.film = film
         self.vd = np.asarray(vdofs, np.int64)
         f = film
-        m = f.m
+        ur, uz, m = f.side.ur, f.side.uz, f.side.m
         # per end: the end element's p_a, p_b, u_r,a, u_r,b, u_z,a, u_z,b
-        first = [f.pd[0], f.pd[1], f.ur[0], f.ur[1], f.uz[0], f.uz[1]]
-        last = [f.pd[m - 2], f.pd[m - 1], f.ur[m - 2], f.ur[m - 1], f.uz[m - 2], f.uz[m - 1]]
+        first = [f.pd[0], f.pd[1], ur[0], ur[1], uz[0], uz[1]]
+        last = [f.pd[m - 2], f.pd[m - 1], ur[m - 2], ur[m - 1], uz[m - 2], uz[m - 1]]
         self._cols = (np.array(first), np.array(last))
         in_end = 0 if f.pressurised_end == "min_z" else 1
         self._ends = (in_end, 1 - in_end)                  # which end each V row reads
@@ -422,7 +350,7 @@ class LeakageTerm(Term):
     def flows(self, t, u, udot=None):
         """(Q_in, Q_out) in mm^3/s."""
         ends = self._end_flows(t, u, udot, 0.0)
-        A, sg = self.film.area, self._sign
+        A, sg = self.film.side.area, self._sign
         return tuple(sg * A * ends[e][0] for e in self._ends)
 
     def add_residual(self, t, u, udot, f):
@@ -432,5 +360,5 @@ class LeakageTerm(Term):
 
     def jacobian_values(self, t, u, udot, shift):
         ends = self._end_flows(t, u, udot, shift)
-        A, sg = self.film.area, self._sign
+        A, sg = self.film.side.area, self._sign
         return np.concatenate([[shift, shift]] + [-sg * A * ends[e][1] for e in self._ends])

@@ -61,9 +61,10 @@ MPa (``set_row_scale`` does nothing):
   qd row  sum_i dy_i [alpha g_hd,i-1 + (1 - alpha) g_hd,i] = 0
   (PaperScheme's anchor of y0 is not needed: qd = 0 solves the qd row without hydrodynamics).
 
-Loads on the seal, as :class:`SealFilmTerm` (the same functions for the radial and
-surface-normal parts): F_r,i = p_i A L_i (Eq. 29-31) on u_r; with ``surface_normal``
-F_z,i = -p_i A (r_{i+1} - r_{i-1})/2 on u_z; with ``shear`` the fluid shear (Eq. 32-34)
+Loads on the seal, as :class:`SealFilmTerm` (both inherit the radial and surface-normal parts
+from :class:`sealts.film.chain_film.ChainFilm`): F_r,i = p_i A L_i (Eq. 29-31) on u_r; with
+``surface_normal`` F_z,i = -p_i A (r_{i+1} - r_{i-1})/2 on u_z; with ``shear`` the fluid
+shear (Eq. 32-34)
 
     tau_i = eta v / h_eff,i - (h_eff,i / 2) g_i - eta (d(dh/dt)/dy)_i,   F_s,i = tau_i A L_i
 
@@ -100,9 +101,10 @@ import numba
 import numpy as np
 
 from ..core import Term
+from .chain_film import ChainFilm
 from .gap import h_eff_rate
 from .reynolds_fv import conductance
-from .seal_film import SealFilmTerm, nodal_conductance, set_chain
+from .seal_film import nodal_conductance
 
 
 @numba.njit(cache=True)
@@ -188,7 +190,7 @@ def zero_gradient_roots(y, h, hde, S, qd, v, eta, h_floor, model, par, th, tpp, 
     return out[:k]
 
 
-class SealPaperFilmTerm(Term):
+class SealPaperFilmTerm(ChainFilm):
     """The paper's scheme (Eq. 15-28) on the seal's rod-side chain; a drop-in for
     :class:`sealts.film.seal_film.SealFilmTerm` in the stroke (module docstring).
 
@@ -198,42 +200,33 @@ class SealPaperFilmTerm(Term):
     """
 
     name = "paper"
-    # the chain's state and the pressure loads are SealFilmTerm's, the very functions
-    film = SealFilmTerm.film
-    lengths = SealFilmTerm.lengths
-    forces = SealFilmTerm.forces
-    axial_forces = SealFilmTerm.axial_forces
-    pressure = SealFilmTerm.pressure
-    _ffargs = SealFilmTerm._ffargs
 
-    def __init__(self, X, chain, pdofs, xdofs, r_rod, v, eta, p_in, p_out, area, ff=None,
-                 h_floor=1e-5, squeeze=True, pressurised_end="min_z", udofs=None,
-                 rod_rate=None, surface_normal=False, shear=True, alpha=0.5, beta=0.5):
+    def __init__(self, side, pdofs, xdofs, v, eta, p_in, p_out, ff=None, h_floor=1e-5,
+                 squeeze=True, pressurised_end="min_z", surface_normal=False, shear=True,
+                 alpha=0.5, beta=0.5):
         """Arguments as :class:`SealFilmTerm`'s (no ``h_ref``: the rows are in MPa), plus
         ``xdofs``: the dofs of the integration constants c0 and qd (both mm^2/s), and
         ``alpha``: the gradient weight of Eq. 27."""
-        m = set_chain(self, X, chain, pdofs, udofs, pressurised_end, r_rod, v, rod_rate, eta,
-                      area, h_floor, squeeze, ff, p_in, p_out)
+        super().__init__(side, pdofs, v, eta, p_in, p_out, ff, h_floor, squeeze,
+                         pressurised_end)
+        m = side.m
         self.xd = np.asarray(xdofs, np.int64)
         if self.xd.shape != (2,):
             raise ValueError("xdofs must be the two dofs (c0, qd)")
         self.cdof, self.qdof = int(self.xd[0]), int(self.xd[1])
         self.alpha, self.beta = alpha, beta
         self.surface_normal, self.shear = surface_normal, shear
-        self.lo = np.concatenate([[0], np.arange(m - 1)])
-        self.hi = np.concatenate([np.arange(1, m), [m - 1]])
-
-        ur, uz, pd = self.ur, self.uz, self.pd
+        ur, uz, pd = side.ur, side.uz, self.pd
+        lo, hi = side.lo, side.hi
         # the dense columns: c0, qd, then u_r and u_z of the chain
         self.dense_cols = np.concatenate([self.xd, ur, uz])
         nb = self.dense_cols.size
         dense_rows = np.concatenate([pd[1:], self.xd])      # Eq. 27 rows, then c0 and qd
         rows = [[pd[0]], pd[1:], pd[1:], np.repeat(dense_rows, nb), ur, ur, ur]
-        cols = [[pd[0]], pd[1:], pd[:-1], np.tile(self.dense_cols, m + 1), pd, uz[self.hi],
-                uz[self.lo]]
+        cols = [[pd[0]], pd[1:], pd[:-1], np.tile(self.dense_cols, m + 1), pd, uz[hi], uz[lo]]
         if surface_normal:
             rows += [uz, uz, uz]
-            cols += [pd, ur[self.hi], ur[self.lo]]
+            cols += [pd, ur[hi], ur[lo]]
         if shear:
             rows.append(np.repeat(uz, nb))
             cols.append(np.tile(self.dense_cols, m))
@@ -301,8 +294,8 @@ class SealPaperFilmTerm(Term):
         unknowns c0, qd (the leakage rows)."""
         q = self._flow(t, u, udot, closed=closed)[5][9]
         if self.pressurised_end == "min_z":
-            return self.area * q[0], self.area * q[-1]
-        return -self.area * q[-1], -self.area * q[0]
+            return self.side.area * q[0], self.side.area * q[-1]
+        return -self.side.area * q[-1], -self.side.area * q[0]
 
     def _weighted(self, Le, a):
         """dy_i [alpha a_{i-1} + (1 - alpha) a_i] for i = 2..n (rows of a, or entries)."""
@@ -313,7 +306,7 @@ class SealPaperFilmTerm(Term):
 
     def _tau(self, v, he, g, hd, y):
         dd = np.diff(hd) / np.diff(y)
-        gd = np.zeros(self.m)
+        gd = np.zeros(self.side.m)
         np.add.at(gd, self._gd_node, self._gd_w * dd[self._gd_elem])
         return self.eta * v / he - 0.5 * he * g - self.eta * gd, dd
 
@@ -321,7 +314,7 @@ class SealPaperFilmTerm(Term):
         """Axial fluid shear force on each chain node (N, +y), Eq. 32-34 with the scheme's
         gradient (computed whether or not ``shear`` puts it into the residual)."""
         y, h, hd, p, v, k = self._flow(t, u, udot, closed=True)
-        return self._tau(v, k[0], k[10], hd, y)[0] * self.area * self.lengths(y)
+        return self._tau(v, k[0], k[10], hd, y)[0] * self.side.area * self.lengths(y)
 
     # ---- Term interface ------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
@@ -329,19 +322,19 @@ class SealPaperFilmTerm(Term):
         he, w, g = k[0], k[2], k[10]
         Le = np.diff(y)
         p_first, p_last = self.p_first(t), self.p_last(t)
-        r = np.empty(self.m)
+        r = np.empty(self.side.m)
         r[0] = p[0] - p_first
         r[1:] = p[1:] - p[:-1] - self._weighted(Le, g)
         ghs = w * u[self.cdof]
         np.add.at(f, self.pd, r)
         f[self.cdof] += self._weighted(Le, ghs).sum() - (p_last - p_first)
         f[self.qdof] += self._weighted(Le, g - ghs).sum()
-        np.subtract.at(f, self.ur, self.forces(t, u))
+        np.subtract.at(f, self.side.ur, self.forces(t, u))
         if self.surface_normal:
-            np.subtract.at(f, self.uz, self.axial_forces(t, u))
+            np.subtract.at(f, self.side.uz, self.axial_forces(t, u))
         if self.shear:
-            F = self._tau(v, he, g, hd, y)[0] * self.area * self.lengths(y)
-            np.subtract.at(f, self.uz, F)
+            F = self._tau(v, he, g, hd, y)[0] * self.side.area * self.lengths(y)
+            np.subtract.at(f, self.side.uz, F)
 
     def derivatives(self, t, u, udot, shift):
         """The state, and dq_i, dg_i by the dense columns (c0, qd, u_r, u_z of the chain)
@@ -349,7 +342,7 @@ class SealPaperFilmTerm(Term):
         y, h, hd, p, v, k = self._flow(t, u, udot)
         he, dhe, w, dw, cv, dcv, hde, dhde, S, q, g = k
         Se, Sy = squeeze_integral_derivatives(y, hde)
-        m = self.m
+        m = self.side.m
         shift_hd = shift if (self.squeeze and udot is not None) else 0.0
         dq = np.empty((m, 2 * m + 2))
         dq[:, 0] = -1.0
@@ -364,7 +357,7 @@ class SealPaperFilmTerm(Term):
     def jacobian_values(self, t, u, udot, shift):
         (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
         he, dhe, w, dw, g = k[0], k[1], k[2], k[3], k[10]
-        m, A, al = self.m, self.area, self.alpha
+        m, A, al = self.side.m, self.side.area, self.alpha
         c0 = u[self.cdof]
         Le = np.diff(y)
         i = np.arange(m)
@@ -391,7 +384,7 @@ class SealPaperFilmTerm(Term):
         vals = [[1.0], np.ones(m - 1), -np.ones(m - 1), rows27.ravel(), row_c, row_q,
                 -A * Li, -0.5 * A * p, 0.5 * A * p]
         if self.surface_normal:
-            dr = self.lengths(self.R + u[self.ur])
+            dr = self.lengths(self.side.R + u[self.side.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
         if self.shear:
             tau, dd = self._tau(v, he, g, hd, y)
@@ -404,8 +397,8 @@ class SealPaperFilmTerm(Term):
                            (uzc[e_ + 1], -dd[e_] / Lg), (uzc[e_], dd[e_] / Lg)):
                 np.add.at(dtau, (n_, col), w_ * d)
             dF = A * Li[:, None] * dtau
-            dF[i, uzc[self.hi]] += 0.5 * A * tau
-            dF[i, uzc[self.lo]] -= 0.5 * A * tau
+            dF[i, uzc[self.side.hi]] += 0.5 * A * tau
+            dF[i, uzc[self.side.lo]] -= 0.5 * A * tau
             vals.append(-dF.ravel())                  # the residual subtracts the force
         return np.concatenate(vals)
 
@@ -443,6 +436,6 @@ class PaperLeakageTerm(Term):
 
     def jacobian_values(self, t, u, udot, shift):
         _, dq, _ = self.film.derivatives(t, u, udot, shift)
-        A = self.film.area
+        A = self.film.side.area
         return np.concatenate([[shift, shift]]
                               + [-sg * A * dq[node] for node, sg in self._ends])

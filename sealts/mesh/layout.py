@@ -21,11 +21,12 @@ new field does not change them; ``field_dofs(name)`` gives the index set of a fi
 example for ``-pc_type fieldsplit``.
 
 This serial layout, on ``COMM_SELF``, defines the *serial* (natural) dof numbers: outputs,
-the pressure front and every full state vector a run hands around use them. Parallel runs
-(``mpiexec``) distribute the mesh instead: :class:`sealts.mesh.partition.Partition` builds
-this DMPlex (with the same labels) on rank 0 and calls ``DMPlex.distribute``; its
-``Numbering`` gives the same serial dofs (and equals this numbering on one rank) plus the
-global and per-rank local numbers, so each rank assembles only its own cells
+the pressure front and every full state vector a run hands around use them. A problem does
+not take a Layout: it takes the one numbering of a scene,
+:class:`sealts.mesh.partition.Numbering` (``Partition.numbering``), whose serial dofs are
+this Section's followed by the global scalars (leakage volumes, the paper scheme's
+constants), and which adds the global and per-rank local numbers of the distributed mesh
+(equal to the serial ones on one rank), so each rank assembles only its own cells
 (:mod:`sealts.problem.problem`).
 """
 import numpy as np
@@ -109,24 +110,6 @@ class Layout:
         self.prony_dofs = (np.array([sec.getFieldOffset(c, len(fields) - 1)
                                      for c in range(c0, c1)], np.int64)[:, None]
                            + np.arange(k)) if k else np.zeros((n_cells, 0), np.int64)
-
-    # a serial layout is its own local numbering: replicated problems (every rank holds
-    # every dof) give their terms serial dofs; the names match a distributed Numbering's
-    @property
-    def cells(self):
-        return np.arange(self.prony_dofs.shape[0])
-
-    @property
-    def serial(self):
-        return np.arange(self.n)
-
-    @property
-    def udofs_local(self):
-        return self.udofs
-
-    @property
-    def prony_local(self):
-        return self.prony_dofs
 
     def field_dofs(self, name):
         """All dofs of one field, sorted."""

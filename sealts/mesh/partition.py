@@ -36,7 +36,7 @@ import numpy as np
 from petsc4py import PETSc
 
 from ..core import Term
-from .layout import label_boundaries
+from .layout import Layout, label_boundaries
 
 
 class Partition:
@@ -109,36 +109,64 @@ class Partition:
                                f"and owns {owned} of {nv} vertices")
         self._mpi = mpi
 
-    def numbering(self, prony=0):
-        """Global and local dofs of a layout with displacements (and ``prony`` dofs per
-        cell): a :class:`Numbering`."""
-        return Numbering(self, int(prony))
+    def numbering(self, prony=0, film=False, scalars=()):
+        """The dofs of a layout with displacements, a film pressure on the ``rod_side``
+        vertices (``film``), ``prony`` dofs per cell and named global ``scalars``: a
+        :class:`Numbering`."""
+        return Numbering(self, int(prony), film, scalars)
+
+
+def node_dof_ranges(start, count, nodes):
+    """The dofs of ``nodes`` (each node's ``count`` consecutive dofs from ``start``), node
+    after node."""
+    c = count[nodes]
+    first = np.repeat(start[nodes], c)
+    within = np.arange(c.sum()) - np.repeat(np.cumsum(c) - c, c)
+    return (first + within).astype(np.int64)
 
 
 class Numbering:
-    """Serial, global and local dof numbers of one field layout on a Partition.
+    """Serial, global and local dof numbers of one field layout on a Partition: the one
+    numbering of a seal scene's unknowns.
 
-    Serial (natural, :class:`~sealts.mesh.layout.Layout`'s): ``udofs`` (node -> 2 dofs),
-    ``prony_dofs`` (cell -> k dofs), ``field_dofs(name)``, ``n``. Global: ``natural``
-    (serial -> global); this rank owns globals [rstart, rstart + n_owned). Local (this
+    Serial (natural): the DMPlex Section of :class:`~sealts.mesh.layout.Layout` (fields on
+    labelled points, vertices first in node order, then cells), then the global scalars in
+    the order named: ``udofs`` (node -> 2 dofs), ``film_dofs`` (chain node -> 1 dof, with
+    ``rod_nodes`` the chain), ``prony_dofs`` (cell -> k dofs), ``scalar_dofs`` (name ->
+    dof), ``field_dofs(name)``, ``n``. Global: ``natural`` (serial -> global); this rank
+    owns globals [rstart, rstart + n_owned): its owned vertices' dofs (node order, every
+    field of a vertex together), its cells' dofs and, on rank 0, the scalars. Local (this
     rank's work vector): ``ltog`` (local -> global), ``owned`` (mask, the first
     ``n_owned``), ``serial`` (local -> serial), ``local_of_serial`` (serial -> local, -1
     if absent), ``udofs_local`` (node -> local dofs, -1 if absent), ``prony_local`` (the
-    rank's cells ``cells`` -> local dofs). ``distributed``: each local row is assembled by
-    this rank alone (no replication), so every local contribution is added up."""
+    rank's cells ``cells`` -> local dofs). Rank 0's ghosts include every boundary node's
+    dofs (``root_nodes``), so the boundary terms (rod, film, groove, pressure, friction,
+    leakage) run there in serial dofs (``on_root``). ``distributed``: each local row is
+    assembled by this rank alone (no replication), so every local contribution is added
+    up. On one rank global = local = serial."""
 
     distributed = True
 
-    def __init__(self, part, k):
-        nv, nc = part.n_nodes, part.n_cells
+    def __init__(self, part, k, film=False, scalars=()):
+        nv = part.n_nodes
         self.partition, self.k = part, k
-        self.n = 2 * nv + k * nc
-        self.udofs = np.arange(2 * nv, dtype=np.int64).reshape(nv, 2)
-        self.prony_dofs = (2 * nv + np.arange(k * nc, dtype=np.int64)).reshape(nc, k)
-        self.fields = ["displacement"] + (["prony"] if k else [])
-        own = np.concatenate([self.udofs[part.owned_nodes].ravel(),
-                              self.prony_dofs[part.cells].ravel()])
-        ghosts = self.udofs[part.ghost_nodes].ravel()
+        lay = Layout(part.mesh, film=film, prony=k)
+        self.udofs, self.film_dofs, self.rod_nodes = lay.udofs, lay.film_dofs, lay.rod_nodes
+        self.prony_dofs = lay.prony_dofs
+        self.fields = list(lay.fields)
+        self.scalars = tuple(scalars)
+        self.scalar_dofs = {name: lay.n + i for i, name in enumerate(self.scalars)}
+        if len(self.scalar_dofs) != len(self.scalars):
+            raise ValueError(f"scalar names repeat: {self.scalars}")
+        self.n = lay.n + len(self.scalars)
+        count = np.full(nv, 2, np.int64)
+        count[lay.rod_nodes] += 1
+        start = self.udofs[:, 0]
+        scal = (np.arange(lay.n, self.n, dtype=np.int64) if part.rank == 0
+                else np.zeros(0, np.int64))
+        own = np.concatenate([node_dof_ranges(start, count, part.owned_nodes),
+                              self.prony_dofs[part.cells].ravel(), scal])
+        ghosts = node_dof_ranges(start, count, part.ghost_nodes)
         self.n_owned = own.size
         every = part._mpi.allgather(own)
         self.rstart = int(sum(a.size for a in every[:part.rank]))
@@ -157,22 +185,43 @@ class Numbering:
         self.cells = part.cells
         self.prony_local = self.local_of_serial[self.prony_dofs[part.cells]]
         self.identity = part.size == 1
+        if self.identity and not np.array_equal(self.serial, np.arange(self.n)):
+            raise RuntimeError("one rank's numbering is not the serial one")
 
     def field_dofs(self, name):
         """All serial dofs of one field, sorted."""
+        arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,
+                  "prony": self.prony_dofs}
         if name not in self.fields:
             raise KeyError(f"no field {name!r} in this layout (fields: {self.fields})")
-        return np.sort({"displacement": self.udofs,
-                        "prony": self.prony_dofs}[name].ravel())
+        return np.sort(arrays[name].ravel())
+
+    def local(self, serial_dofs):
+        """(local dofs, mask) of serial dofs: those this rank holds and which they are."""
+        loc = self.local_of_serial[np.asarray(serial_dofs, np.int64)]
+        return loc[loc >= 0], loc >= 0
 
     def on_root(self, terms):
         """Terms written in serial dofs (rod, groove, pressure: along the whole boundary),
-        evaluated by rank 0 alone on its local vector; no terms on the other ranks."""
+        evaluated by rank 0 alone on its local vector. The other ranks get their post-step
+        hooks only (:class:`HookOnly`), so a history (the friction anchors, the front) is
+        the same on every rank, as are the outputs computed from it."""
         if self.partition.rank != 0:
-            return []
+            return [HookOnly(t) for t in terms if type(t).accepted is not Term.accepted]
         if self.identity:
             return list(terms)
         return [SerialTermOnLocal(t, self.local_of_serial) for t in terms]
+
+
+class HookOnly(Term):
+    """A term's post-step hook without its rows: what the ranks that do not assemble a
+    boundary term run of it (u full and serial)."""
+
+    def __init__(self, term):
+        self.term = term
+
+    def accepted(self, t, u):
+        self.term.accepted(t, u)
 
 
 class SerialTermOnLocal(Term):
@@ -211,7 +260,6 @@ class SerialTermOnLocal(Term):
         return self.term.jacobian_values(t, us, uds, shift)
 
     def accepted(self, t, u):
-        """The term's own hook (u is full and serial already). It runs on rank 0 alone,
-        where the term is assembled; a hook every rank must run (a guard that may end the
-        run) is a term of its own outside ``on_root``."""
+        """The term's own hook (u is full and serial already); the other ranks run it
+        through :class:`HookOnly`."""
         self.term.accepted(t, u)

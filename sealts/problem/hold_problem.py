@@ -13,7 +13,7 @@ import copy
 
 import numpy as np
 
-from ..contact.rigid import node_contact_pressure
+from ..contact.rigid import RodContact, node_contact_pressure
 from ..solid.pressure import PressureLoad, RelaxedFront
 from ..solid.viscoelastic_solid import ViscoelasticSolid
 from .seal_model import ramp
@@ -34,8 +34,8 @@ class HoldProblem:
         X = mesh.X
         self.solid, self.prony, H0 = ves.terms(lay, u0)
         # rod and groove at their final positions
-        self.rod = copy.copy(model.rod)
-        self.rod.r_rod = lambda t: model.r_rod_final
+        self.side = model.side.on(lay.udofs, r_rod=lambda t: model.r_rod_final)
+        self.rod = RodContact(self.side, model.law)
         self.groove = copy.copy(model.groove)
         self.groove.r_bottom = lambda t: model.r_g_final
         self.load = PressureLoad(X, mesh.conn,
@@ -52,7 +52,7 @@ class HoldProblem:
         terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge_terms,
                                   dofs=lay, solid=self.solid)
         terms.insert(1, self.prony)
-        terms += [model.rod_side_guard(lay.udofs, model.r_rod_final),
+        terms += [model.rod_side_guard(self.side),
                   RelaxedFront(self.load, self.node_contact_pressure, max_advance=1.0)]
         fields = {"displacement": lay.field_dofs("displacement")}
         if ves.prony_size:

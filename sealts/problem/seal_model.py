@@ -12,6 +12,7 @@ from ..contact.asperity import ExponentialLaw, law_from_scene
 from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
                              tributary_lengths)
 from ..contact.rod_side_guard import RodSideGuard
+from ..contact.rod_side import RodSide
 from ..mesh.partition import Partition
 from ..solid.stabilisation import ViscousStabilisation
 from ..solid.term import SolidTerm
@@ -67,8 +68,11 @@ class SealModel:
         self.r_g0 = max(groove_radius, r_out + 1e-3)
         area = 2 * np.pi * rod_radius if axisym else depth
         self.law = law if law is not None else ExponentialLaw()
-        self.rod = RodContact(X, chain, self.rod_radius, area, self.law, udofs=udofs)
         bnd = mesh.boundary_nodes()
+        # the rod side (the boundary nodes off it: what the rod-side guard watches)
+        self.side = RodSide(X, chain, self.rod_radius, area, udofs=udofs,
+                            off=np.setdiff1d(bnd, chain))
+        self.rod = RodContact(self.side, self.law)
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
                                     lambda t: groove_walls, penalty=penalty, depth=depth,
@@ -101,8 +105,6 @@ class SealModel:
         if hold_rolling is None:
             hold_rolling = is_round(X, loop)
         self.gauge = self.roll if hold_rolling and not axisym else None
-        # boundary nodes the rod does not act on (only the rod side carries contact and film)
-        self.off_rod = np.setdiff1d(bnd, chain)
 
     def local_terms(self, boundary, stab=False, dofs=None, solid=None):
         """This rank's terms: its cells' solid, (its owned nodes' stabilisation), and on
@@ -119,26 +121,23 @@ class SealModel:
                                          self.axisym, udofs=self.udofs, heating=s.heating)
         return self._full_solid
 
-    def rod_side_guard(self, udofs=None, r_rod=None):
+    def rod_side_guard(self, side=None):
         """The post-step guard of :mod:`sealts.contact.rod_side_guard` for this seal: the
         boundary nodes off the rod side may not pass into the rod by more than the asperity
-        law's contact gap (h_mix of Eq. 44). ``udofs``,
-        ``r_rod``: another layout's dofs (the stroke's) and rod radius (default the
-        model's, moving in steps 1-2)."""
-        udofs = self.udofs if udofs is None else udofs
-        r_rod = self.rod_radius if r_rod is None else r_rod
+        law's contact gap (h_mix of Eq. 44). ``side``: another layout's rod side (the
+        stroke's, the hold's; default the model's, its rod moving in steps 1-2)."""
+        side = self.side if side is None else side
 
         def note(u):
             if self.axisym:
                 return ""
             u_ser = np.zeros(self.n)
-            u_ser[self.udofs] = u[udofs]
+            u_ser[self.udofs] = u[side.udofs]
             roll = np.degrees(self.roll.angle(u_ser))
             return (f"; the plane-strain section has rolled by {roll:.3g} degrees (without "
                     "hoop strain only friction holds a round section from rolling)")
 
-        return RodSideGuard(self.mesh.X, self.off_rod, udofs, r_rod, self.law.contact_gap,
-                            note)
+        return RodSideGuard(side, self.law.contact_gap, note)
 
     def problem(self, n, terms, **kw):
         """A Problem of this seal's terms on its communicator: the basic line search (the
@@ -180,9 +179,8 @@ class SealModel:
 
     def contact_profile(self, t, u):
         """Along the rod side, by z: current axial position y (mm), gap h, contact pressure."""
-        c = self.mesh.chain("rod_side")
-        y = self.mesh.X[c, 1] + u[self.udofs[c, 1]]
-        h = self.rod.gap(t, u)
+        y = self.side.y(u)
+        h = self.side.gap(t, u)
         p, _ = self.rod.pressure(t, u)
         return y, h, p
 

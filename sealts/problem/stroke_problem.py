@@ -58,7 +58,6 @@ from ..contact.rod_motion import motion_from_scene
 from ..core import Constraints
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
-from ..mesh.layout import Layout
 from ..solid.pressure import PressureLoad
 from ..solid.term import SolidTerm
 from ..solid.viscoelastic_solid import ViscoelasticSolid
@@ -80,59 +79,61 @@ class StrokeProblem:
             self.viscoelastic = ves = ViscoelasticSolid(model, ve, scene.stroke.t_end)
         prony_size = self.viscoelastic.prony_size if self.viscoelastic else 0
         wet = scene.stroke.film
-        self.layout = lay = Layout(mesh, film=wet, prony=prony_size)
+        fl, fm = scene.fluid, scene.film
+        # the global scalars: the leakage volumes, and the paper scheme's c0 and qd
+        scalars = ()
+        if wet:
+            scalars = ("V_in", "V_out") + (("c0", "qd") if fm.scheme == "paper" else ())
+        # the model's distributed mesh with this step's fields: each rank assembles the
+        # solid on its own cells, rank 0 the terms along the boundary (in serial dofs)
+        self.layout = lay = model.partition.numbering(prony=prony_size, film=wet,
+                                                      scalars=scalars)
+        self.n = lay.n
         ud = lay.udofs
         axisym = model.axisym
         self.prony = None
         if self.viscoelastic:
             self.solid, self.prony, H0 = ves.terms(lay, u0)
         else:
-            self.solid = SolidTerm(X, mesh.conn, model.material, axisym, udofs=ud)
-        chain = mesh.chain("rod_side")
+            self.solid = SolidTerm(X, mesh.conn[lay.cells], model.material, axisym,
+                                   udofs=lay.udofs_local)
         a = scene.asperity
-        self.rod = RodContact(X, chain, lambda t: model.r_rod_final, model.rod.area,
-                              model.law, udofs=ud)
+        # the rod side in this layout, the rod at its final radius
+        self.side = side = model.side.on(ud, r_rod=lambda t: model.r_rod_final)
+        self.rod = RodContact(side, model.law)
         g = model.groove
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, g.nodes, trib, axisym, lambda t: model.r_g_final,
                                     g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
                                     corner_radius=g.rho)
-        fl, fm = scene.fluid, scene.film
         self.film = self.leakage = self.xdofs = None
         self.vdofs = np.zeros(0, np.int64)
-        terms = [self.solid, self.rod, self.groove]
+        boundary = [self.rod, self.groove]
         if wet:
-            film_args = (X, chain, lay.film_dofs)
-            film_kw = dict(r_rod=lambda t: model.r_rod_final, v=self.motion.v,
-                           eta=fl.viscosity, p_in=fl.p_in, p_out=fl.p_out,
-                           area=model.rod.area, ff=flow_factors_of(fm), h_floor=fm.h_floor,
-                           squeeze=fm.squeeze, pressurised_end="min_z", udofs=ud,
-                           surface_normal=True, shear=True, beta=fm.beta)
-            self.vdofs = np.array([lay.n, lay.n + 1])
-            # the paper's scheme (film.scheme = "paper") has two more unknowns after V_in
-            # and V_out, its integration constants c0 and qd; same loads on the seal, its
-            # own film rows and leakage flows
+            film_kw = dict(v=self.motion.v, eta=fl.viscosity, p_in=fl.p_in, p_out=fl.p_out,
+                           ff=flow_factors_of(fm), h_floor=fm.h_floor, squeeze=fm.squeeze,
+                           pressurised_end="min_z", surface_normal=True, shear=True,
+                           beta=fm.beta)
+            self.vdofs = np.array([lay.scalar_dofs["V_in"], lay.scalar_dofs["V_out"]])
+            # the paper's scheme (film.scheme = "paper") has two more unknowns, its
+            # integration constants c0 and qd; same loads on the seal, its own film rows
+            # and leakage flows
             if fm.scheme == "paper":
-                self.xdofs = np.array([lay.n + 2, lay.n + 3])
-                self.film = SealPaperFilmTerm(*film_args, self.xdofs, alpha=fm.alpha,
-                                              **film_kw)
+                self.xdofs = np.array([lay.scalar_dofs["c0"], lay.scalar_dofs["qd"]])
+                self.film = SealPaperFilmTerm(side, lay.film_dofs, self.xdofs,
+                                              alpha=fm.alpha, **film_kw)
                 self.leakage = PaperLeakageTerm(self.film, self.vdofs)
             else:
-                self.film = SealFilmTerm(*film_args, **film_kw)
+                self.film = SealFilmTerm(side, lay.film_dofs, **film_kw)
                 self.leakage = LeakageTerm(self.film, self.vdofs)
-            terms += [self.film, self.leakage]
-        self.n = lay.n + self.vdofs.size + (0 if self.xdofs is None else 2)
-        if self.prony is not None:
-            terms.insert(1, self.prony)
+            boundary += [self.film]
         self.friction = self.groove_friction = None
         if scene.stroke.friction and a.mu_s > 0.0:
             self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
                                         gamma_crit=scene.stroke.gamma_crit)
-            terms.append(self.friction)
         if scene.stroke.friction and scene.groove.mu > 0.0:
             self.groove_friction = GrooveFriction(self.groove, mu=scene.groove.mu,
                                                   gamma_crit=scene.stroke.gamma_crit)
-            terms.append(self.groove_friction)
         self.load = None
         old = load
         if old is not None:
@@ -143,19 +144,29 @@ class StrokeProblem:
             on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges], bool)
             self.load.s0 = np.where(on_rod, 0.0, old.s0)
             self.load.s1 = np.where(on_rod, 0.0, old.s1)
-            terms.append(self.load)
         self.U0 = np.zeros(self.n)
         self.U0[ud] = u0[model.udofs]
         fields = None
         if prony_size:
-            self.U0[lay.prony_dofs] = H0
+            self.U0[lay.prony_dofs[lay.cells]] = H0
             prony = lay.field_dofs("prony")
             fields = {"prony": prony,
                       "displacement": np.setdiff1d(np.arange(self.n), prony)}
-        # post-step hooks run in the terms' order: the rod-side guard first, then the
-        # frictions' return mapping
-        terms.insert(0, model.rod_side_guard(ud, model.r_rod_final))
-        self.problem = model.problem(self.n, terms, prefix="stroke_", fields=fields)
+        # post-step hooks run in the terms' order: the rod-side guard first (on every rank),
+        # then the frictions' return mapping
+        self.guard = model.rod_side_guard(side)
+        self.problem = model.problem(
+            self.n, self._terms(self.solid, self.prony, with_leakage=True),
+            prefix="stroke_", fields=fields, dofs=lay)
+
+    def _terms(self, solid, prony, with_leakage):
+        """The problem's terms in its numbering: the guard, this rank's solid (and Prony
+        term), rank 0's boundary terms (rod, groove, film, leakage, pressure, frictions)."""
+        boundary = [t for t in (self.rod, self.groove, self.film,
+                                self.leakage if with_leakage else None, self.friction,
+                                self.groove_friction, self.load) if t is not None]
+        return ([self.guard, solid] + ([prony] if prony is not None else [])
+                + self.layout.on_root(boundary))
 
     def start(self):
         """Film pressures with the seal held, then seal and film in equilibrium at t = 0."""
@@ -166,9 +177,8 @@ class StrokeProblem:
                                            lay.film_dofs.size)
             if self.xdofs is not None:
                 U[self.xdofs] = self.film.constants(0.0, U)
-            held = np.concatenate([lay.udofs.ravel(), self.vdofs]
-                                  + ([lay.prony_dofs.ravel()] if self.prony is not None
-                                     else []))
+            # one small 1D problem, replicated on every rank (serial dofs)
+            held = np.concatenate([lay.udofs.ravel(), self.vdofs, lay.prony_dofs.ravel()])
             U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
                         prefix="stroke_film_").solve_steady(U, 0.0)
             self.film.set_row_scale(0.0, U)
@@ -176,20 +186,21 @@ class StrokeProblem:
             fr.reset(0.0, U)                       # no elastic slip in the pressurised state
         # the long-term equilibrium with the film (the paper's step 2 ends with the
         # hydrostatic film); a viscoelastic seal starts relaxed from it
-        statics = [t for t in self.problem.terms if t is not self.leakage]
         fixed = self.vdofs
+        solid = self.solid
         if self.prony is not None:
-            k = statics.index(self.solid)
-            statics[k:k + 2] = [SolidTerm(self.model.mesh.X, self.model.mesh.conn,
-                                          self.model.material, self.model.axisym,
-                                          udofs=lay.udofs)]
-            fixed = np.concatenate([fixed, lay.prony_dofs.ravel()])
-        start = self.model.problem(n, statics, constraints=Constraints(fixed, U[fixed]),
-                                   prefix="stroke_start_")
+            solid = SolidTerm(self.model.mesh.X, self.model.mesh.conn[lay.cells],
+                              self.model.material, self.model.axisym, udofs=lay.udofs_local)
+            fixed = np.concatenate([fixed, lay.prony_dofs[lay.cells].ravel()])
+        loc, mine = lay.local(fixed)
+        start = self.model.problem(n, self._terms(solid, None, with_leakage=False),
+                                   constraints=Constraints(loc, U[fixed][mine]),
+                                   prefix="stroke_start_", dofs=lay)
         U = start.solve_steady(U, 0.0)
         self.problem.counters.newton += start.counters.newton
         if self.prony is not None:
-            U[lay.prony_dofs] = self.viscoelastic.relax(self.prony, U)
+            U[lay.prony_dofs[lay.cells]] = self.viscoelastic.relax(self.prony, U[lay.serial])
+            U = self.problem.gather(self.problem._owned(U)).copy()   # every rank's cells
         self.problem.accepted(0.0, U)
         return U
 
@@ -208,14 +219,14 @@ class StrokeProblem:
         """Along the rod side: y (mm), h (mm), film pressure p and asperity pressure (MPa),
         fluid shear tau and solid friction stress tau_solid (MPa, +y on the seal); the names
         of the film-only scenes' profiles."""
-        f, rod = self.film, self.rod
-        y = rod.X[rod.chain, 1] + U[rod.uz]
-        h = rod.gap(t, U)
+        f, rod, side = self.film, self.rod, self.side
+        y = side.y(U)
+        h = side.gap(t, U)
         p_asp, _ = rod.pressure(t, U)
         p = tau = np.zeros_like(h)
         if f is not None:
             p = f.pressure(U)
-            tau = f.shear_forces(t, U, Udot) / (f.area * f.lengths(y))
+            tau = f.shear_forces(t, U, Udot) / (side.area * side.lengths_of(y))
         tau_s = (self.friction.stress(t, U) if self.friction is not None
                  else np.zeros_like(tau))
         return {"y": y, "h": h, "p": p, "p_asperity": p_asp, "tau": tau, "tau_solid": tau_s}
@@ -224,8 +235,8 @@ class StrokeProblem:
         """Forces on the seal (N): fluid shear (+y), radial film and asperity loads, flows
         (zero without the film)."""
         f, rod = self.film, self.rod
-        h = rod.gap(t, U)
-        y = rod.X[rod.chain, 1] + U[rod.uz]
+        h = self.side.gap(t, U)
+        y = self.side.y(U)
         touching = rod.law.touching(h)
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
         q_in = q_out = shear = load_fluid = p_max = 0.0

@@ -1,6 +1,6 @@
 """The seal's Prony material for a step of a scene's time scales (paper Eq. 7-12): the
 series and its WLF factor A(theta(t)), the classification of its terms (relaxed, frozen,
-active) over [viscoelastic.t_min, t_end], and the terms on a Layout from a relaxed start.
+active) over [viscoelastic.t_min, t_end], and the terms on a Numbering from a relaxed start.
 Shared by the hold and the stroke.
 
 The start is relaxed, as ABAQUS hands over after a long-term step: every internal variable
@@ -38,7 +38,7 @@ def prony_series(ve):
 class ViscoelasticSolid:
     """The seal's Prony material for a step of the scene's time scales: the series and its
     WLF factor, the classification of its terms over [viscoelastic.t_min, t_end], and the
-    terms built on a Layout from a relaxed start u0 (H_i = S_iso(u0)). Shared by the hold and
+    terms built on a Numbering from a relaxed start u0 (H_i = S_iso(u0)). Shared by the hold and
     the stroke."""
 
     def __init__(self, model, ve, t_end):
@@ -55,9 +55,8 @@ class ViscoelasticSolid:
 
     def terms(self, layout, u0):
         """(elastic SolidTerm, PronyTerm, H0 as the layout's prony values per cell) from the
-        displacement u0 of the model's own layout, on the layout's cells (``cells``) in its
-        local dofs: every cell in serial dofs for a serial Layout (replicated problems),
-        this rank's cells for the model's distributed Numbering."""
+        displacement u0 of the model's own numbering, on this rank's cells (``cells``) of
+        the :class:`sealts.mesh.partition.Numbering` ``layout``, in its local dofs."""
         s, c, m = self.series, self.classes, self.model
         keep = 1.0 - s.g[c.relaxed].sum()
         elastic = replace(self.instantaneous, c10=self.instantaneous.c10 * keep,
@@ -72,8 +71,9 @@ class ViscoelasticSolid:
         return solid, prony, self.relax(prony, u[layout.serial])
 
     def relax(self, prony, u):
-        """The relaxed state at the displacement in u (the layout's local vector): sets the frozen
-        terms' stress g S_iso(u) and returns H_i = S_iso(u) per cell (the prony values)."""
+        """The relaxed state at the displacement in u (the layout's local vector): sets the
+        frozen terms' stress g S_iso(u) and returns H_i = S_iso(u) per cell (the prony
+        values of this rank's cells)."""
         H0, S0 = prony.equilibrium(u)
         prony.frozen = self.series.g[self.classes.frozen].sum() * S0
         return H0.reshape(H0.shape[0], -1)

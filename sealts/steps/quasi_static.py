@@ -108,4 +108,5 @@ class RodProgress(Observer):
         if self.say.due():
             rod = self.model.rod
             self.say(f"step {info.step:4d}  t = {t:.4g}  dt = {info.dt:.3g}  rod force = "
-                     f"{rod.forces(t, u).sum():.4g} N  min h = {rod.gap(t, u).min() * 1e3:.4g} um")
+                     f"{rod.forces(t, u).sum():.4g} N  min h = "
+                     f"{rod.side.gap(t, u).min() * 1e3:.4g} um")
