@@ -155,6 +155,7 @@ class StrokeProblem:
         # post-step hooks run in the terms' order: the rod-side guard first (on every rank),
         # then the frictions' return mapping
         self.guard = model.rod_side_guard(side)
+        self._output_terms = self._relaxed_from = None
         self.problem = model.problem(
             self.n, self._terms(self.solid, self.prony, with_leakage=True),
             prefix="stroke_", fields=fields, dofs=lay)
@@ -198,11 +199,26 @@ class StrokeProblem:
                                    prefix="stroke_start_", dofs=lay)
         U = start.solve_steady(U, 0.0)
         self.problem.counters.newton += start.counters.newton
+        self._relaxed_from = U
         if self.prony is not None:
             U[lay.prony_dofs[lay.cells]] = self.viscoelastic.relax(self.prony, U[lay.serial])
             U = self.problem.gather(self.problem._owned(U)).copy()   # every rank's cells
         self.problem.accepted(0.0, U)
         return U
+
+    def output_terms(self):
+        """The viscoelastic solid and Prony terms over every cell in serial dofs, for the
+        fields output: the problem's own on one rank; under MPI a copy over all cells,
+        relaxed from the same start (its frozen Prony stress)."""
+        if self.layout.identity:
+            return self.solid, self.prony
+        if self._output_terms is None:
+            lay = self.layout
+            cells = np.arange(self.model.mesh.conn.shape[0])
+            solid, prony = self.viscoelastic.terms_on(cells, lay.udofs, lay.prony_dofs)
+            self.viscoelastic.relax(prony, self._relaxed_from)
+            self._output_terms = solid, prony
+        return self._output_terms
 
     @property
     def frictions(self):

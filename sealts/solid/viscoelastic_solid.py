@@ -57,18 +57,23 @@ class ViscoelasticSolid:
         """(elastic SolidTerm, PronyTerm, H0 as the layout's prony values per cell) from the
         displacement u0 of the model's own numbering, on this rank's cells (``cells``) of
         the :class:`sealts.mesh.partition.Numbering` ``layout``, in its local dofs."""
+        solid, prony = self.terms_on(layout.cells, layout.udofs_local, layout.prony_local)
+        u = np.zeros(layout.n)
+        u[layout.udofs] = u0[self.model.udofs]
+        return solid, prony, self.relax(prony, u[layout.serial])
+
+    def terms_on(self, cells, udofs, prony_dofs):
+        """(elastic SolidTerm, PronyTerm) on the mesh's ``cells`` with the dofs ``udofs``
+        (node -> 2) and ``prony_dofs`` (one row per cell of ``cells``); the frozen terms'
+        stress is set by :meth:`relax`."""
         s, c, m = self.series, self.classes, self.model
         keep = 1.0 - s.g[c.relaxed].sum()
         elastic = replace(self.instantaneous, c10=self.instantaneous.c10 * keep,
                           c01=self.instantaneous.c01 * keep)
-        mesh = m.mesh
-        solid = SolidTerm(mesh.X, mesh.conn[layout.cells], elastic, m.axisym,
-                          udofs=layout.udofs_local)
+        solid = SolidTerm(m.mesh.X, m.mesh.conn[cells], elastic, m.axisym, udofs=udofs)
         prony = PronyTerm(solid, self.instantaneous, s.g[c.active], s.tau[c.active],
-                          layout.prony_local, shift=self.shift_of_t)
-        u = np.zeros(layout.n)
-        u[layout.udofs] = u0[m.udofs]
-        return solid, prony, self.relax(prony, u[layout.serial])
+                          prony_dofs, shift=self.shift_of_t)
+        return solid, prony
 
     def relax(self, prony, u):
         """The relaxed state at the displacement in u (the layout's local vector): sets the

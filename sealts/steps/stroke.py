@@ -68,7 +68,8 @@ def seal_fields(model, stroke):
         if stroke.viscoelastic is None:
             cells = stress_cells(model.full_solid(), u)
         else:
-            cells = stress_cells(stroke.solid, U, stroke.prony)
+            solid, prony = stroke.output_terms()
+            cells = stress_cells(solid, U, prony)
         return {"displacement": disp, "film_pressure": p}, cells
     return fields
 
