@@ -10,6 +10,7 @@ field               points                     components
 ==================  =========================  ==========================================
 ``displacement``    every vertex               2: u_r, u_z (mm)
 ``film_pressure``   ``rod_side`` vertices      1: p (MPa), when the scene has a film
+``rod_slip``        ``rod_side`` vertices      1: z (mm), the rod friction's elastic slip
 ``prony``           every cell                 ``prony``: internal variables (issue 4)
 ==================  =========================  ==========================================
 
@@ -52,7 +53,7 @@ def label_boundaries(dm, mesh, v0):
 class Layout:
     """DMPlex + Section of a seal mesh with the fields a scene needs."""
 
-    def __init__(self, mesh, film=False, prony=0):
+    def __init__(self, mesh, film=False, prony=0, slip=False):
         X = np.ascontiguousarray(mesh.X, float)
         conn = np.ascontiguousarray(mesh.conn, PETSc.IntType)
         n_cells, n_nodes = conn.shape[0], X.shape[0]
@@ -68,10 +69,12 @@ class Layout:
         fields = [("displacement", 2)]
         if film:
             fields.append(("film_pressure", 1))
+        if slip:
+            fields.append(("rod_slip", 1))
         if prony:
             fields.append(("prony", int(prony)))
         self.fields = [f for f, _ in fields]
-        rod = mesh.chain("rod_side") if film else np.zeros(0, np.int64)
+        rod = mesh.chain("rod_side") if (film or slip) else np.zeros(0, np.int64)
         sec = PETSc.Section().create(comm=PETSc.COMM_SELF)
         sec.setNumFields(len(fields))
         for i, (name, k) in enumerate(fields):
@@ -83,9 +86,12 @@ class Layout:
         for v in range(v0, v1):
             sec.setFieldDof(v, 0, 2)
         ndof[v0 - p0:v1 - p0] = 2
-        for node in rod:
-            sec.setFieldDof(v0 + int(node), 1, 1)
-            ndof[v0 + node - p0] += 1
+        for name in ("film_pressure", "rod_slip"):
+            if name in self.fields:
+                f = self.fields.index(name)
+                for node in rod:
+                    sec.setFieldDof(v0 + int(node), f, 1)
+                ndof[v0 + rod - p0] += 1
         if prony:
             for c in range(c0, c1):
                 sec.setFieldDof(c, len(fields) - 1, int(prony))
@@ -105,7 +111,10 @@ class Layout:
         self.udofs = np.array([[sec.getFieldOffset(v, 0)] * 2 for v in range(v0, v1)],
                               np.int64) + [0, 1]
         self.rod_nodes = rod
-        self.film_dofs = np.array([sec.getFieldOffset(v0 + int(i), 1) for i in rod], np.int64)
+        self.film_dofs, self.slip_dofs = (
+            np.array([sec.getFieldOffset(v0 + int(i), self.fields.index(name)) for i in rod]
+                     if name in self.fields else [], np.int64)
+            for name in ("film_pressure", "rod_slip"))
         k = int(prony)
         self.prony_dofs = (np.array([sec.getFieldOffset(c, len(fields) - 1)
                                      for c in range(c0, c1)], np.int64)[:, None]
@@ -114,7 +123,7 @@ class Layout:
     def field_dofs(self, name):
         """All dofs of one field, sorted."""
         arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,
-                  "prony": self.prony_dofs}
+                  "rod_slip": self.slip_dofs, "prony": self.prony_dofs}
         if name not in self.fields:
             raise KeyError(f"no field {name!r} in this layout (fields: {self.fields})")
         return np.sort(arrays[name].ravel())

@@ -109,11 +109,11 @@ class Partition:
                                f"and owns {owned} of {nv} vertices")
         self._mpi = mpi
 
-    def numbering(self, prony=0, film=False, scalars=()):
-        """The dofs of a layout with displacements, a film pressure on the ``rod_side``
-        vertices (``film``), ``prony`` dofs per cell and named global ``scalars``: a
-        :class:`Numbering`."""
-        return Numbering(self, int(prony), film, scalars)
+    def numbering(self, prony=0, film=False, scalars=(), slip=False):
+        """The dofs of a layout with displacements, a film pressure (``film``) and the rod
+        friction's elastic slip (``slip``) on the ``rod_side`` vertices, ``prony`` dofs per
+        cell and named global ``scalars``: a :class:`Numbering`."""
+        return Numbering(self, int(prony), film, scalars, slip)
 
 
 def node_dof_ranges(start, count, nodes):
@@ -131,9 +131,9 @@ class Numbering:
 
     Serial (natural): the DMPlex Section of :class:`~sealts.mesh.layout.Layout` (fields on
     labelled points, vertices first in node order, then cells), then the global scalars in
-    the order named: ``udofs`` (node -> 2 dofs), ``film_dofs`` (chain node -> 1 dof, with
-    ``rod_nodes`` the chain), ``prony_dofs`` (cell -> k dofs), ``scalar_dofs`` (name ->
-    dof), ``field_dofs(name)``, ``n``. Global: ``natural`` (serial -> global); this rank
+    the order named: ``udofs`` (node -> 2 dofs), ``film_dofs`` and ``slip_dofs`` (chain
+    node -> 1 dof each, with ``rod_nodes`` the chain), ``prony_dofs`` (cell -> k dofs),
+    ``scalar_dofs`` (name -> dof), ``field_dofs(name)``, ``n``. Global: ``natural`` (serial -> global); this rank
     owns globals [rstart, rstart + n_owned): its owned vertices' dofs (node order, every
     field of a vertex together), its cells' dofs and, on rank 0, the scalars. Local (this
     rank's work vector): ``ltog`` (local -> global), ``owned`` (mask, the first
@@ -147,11 +147,12 @@ class Numbering:
 
     distributed = True
 
-    def __init__(self, part, k, film=False, scalars=()):
+    def __init__(self, part, k, film=False, scalars=(), slip=False):
         nv = part.n_nodes
         self.partition, self.k = part, k
-        lay = Layout(part.mesh, film=film, prony=k)
+        lay = Layout(part.mesh, film=film, prony=k, slip=slip)
         self.udofs, self.film_dofs, self.rod_nodes = lay.udofs, lay.film_dofs, lay.rod_nodes
+        self.slip_dofs = lay.slip_dofs
         self.prony_dofs = lay.prony_dofs
         self.fields = list(lay.fields)
         self.scalars = tuple(scalars)
@@ -160,7 +161,7 @@ class Numbering:
             raise ValueError(f"scalar names repeat: {self.scalars}")
         self.n = lay.n + len(self.scalars)
         count = np.full(nv, 2, np.int64)
-        count[lay.rod_nodes] += 1
+        count[lay.rod_nodes] += int(film) + int(slip)
         start = self.udofs[:, 0]
         scal = (np.arange(lay.n, self.n, dtype=np.int64) if part.rank == 0
                 else np.zeros(0, np.int64))
@@ -191,7 +192,7 @@ class Numbering:
     def field_dofs(self, name):
         """All serial dofs of one field, sorted."""
         arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,
-                  "prony": self.prony_dofs}
+                  "rod_slip": self.slip_dofs, "prony": self.prony_dofs}
         if name not in self.fields:
             raise KeyError(f"no field {name!r} in this layout (fields: {self.fields})")
         return np.sort(arrays[name].ravel())

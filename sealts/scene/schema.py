@@ -213,6 +213,14 @@ class Stroke:
                                   "no film or leakage unknowns)")
     gamma_crit: float = option(1e-4, unit="mm", gt=0.0,
                                doc="elastic slip at which solid friction reaches mu_s p_s")
+    friction_history: str = option(
+        "anchors", choices=("anchors", "state"),
+        doc="the rod friction's elastic slip: anchors, moved after each accepted step (the "
+            "paper's return mapping); state, TS unknowns with the Bouc-Wen rate law, under "
+            "TS error control (sealts/contact/slip_state_friction.py)")
+    friction_exponent: float = option(4.0, ge=2.0,
+                                      doc="friction_history = state: the Bouc-Wen exponent n "
+                                          "(the knee between stick and slide sharpens with n)")
 
 
 @dataclass(frozen=True)
@@ -405,9 +413,18 @@ def _check_asperity(s):
                          "it from)")
 
 
+def _check_friction_history(s):
+    """The Bouc-Wen exponent belongs to the slip-state history (ignored otherwise)."""
+    st = s.stroke
+    if st.friction_history != "state" and st.friction_exponent != Stroke().friction_exponent:
+        raise SceneError("stroke.friction_exponent is only used with stroke.friction_history "
+                         f"= 'state' (friction_history is {st.friction_history!r})")
+
+
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
     _check_asperity(s)
+    _check_friction_history(s)
     if s.model == "seal":
         _check_seal_geometry(s, base)
         mat = s.material
