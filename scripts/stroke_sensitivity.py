@@ -11,6 +11,7 @@ and the spread of each family against its base. Usage:
 
     .venv/bin/python scripts/stroke_sensitivity.py [--mesh 0.1 0.4] [--rtol 1e-3]
         [--variants base,rtol,order,stops,dt,sweep] [--no-friction-too | --no-friction] [--petsc '-opt value']
+        [--set stroke.friction_history=state ...]
 
 ``sweep``: rtol 1e-2, 1e-3, 1e-4, 1e-5 (its spread is then the distance from the first).
 """
@@ -79,6 +80,8 @@ def main():
                     help="repeat every variant with stroke.friction = false")
     ap.add_argument("--no-friction", action="store_true",
                     help="only stroke.friction = false")
+    ap.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                    help="a scene key for every variant, e.g. stroke.friction_history=state")
     ap.add_argument("--petsc", default="",
                     help="PETSc options for every stroke, e.g. '-stroke_ts_adapt_wnormtype "
                          "infinity'")
@@ -90,13 +93,20 @@ def main():
     s = load("oring_stroke", mesh={"h_contact": args.mesh[0], "h_bulk": args.mesh[1],
                                    "cache": str(ROOT / "meshes")},
              output={"progress": False})
+    for kv in args.set:
+        dotted, value = kv.split("=", 1)
+        section, key = dotted.split(".")
+        part = getattr(s, section)
+        value = type(getattr(part, key))(value)
+        s = replace(s, **{section: replace(part, **{key: value})})
     state = prepare(s)
     which = args.variants.split(",")
     dry = ("no friction: ", replace(s, stroke=replace(s.stroke, friction=False)))
     cases = ([dry] if args.no_friction else
              [("", s)] + ([dry] if args.no_friction_too else []))
     head = " ".join(f"{h:>12}" for _, h, _ in KEYS)
-    print(f"mesh {args.mesh[0]} / {args.mesh[1]} mm, rtol {args.rtol:g} {args.petsc}")
+    print(f"mesh {args.mesh[0]} / {args.mesh[1]} mm, rtol {args.rtol:g} {args.petsc} "
+          f"{' '.join(args.set)}")
     print(f"{'variant':<34}{head} {'acc':>5} {'rej':>4} {'Newton':>6} {'wall s':>7}")
     for prefix, base in cases:
         rows = []

@@ -53,16 +53,18 @@ def mounted(tmp_path_factory):
 class Mirror:
     """The mirror as a signed permutation of a StrokeProblem's unknowns: (M U)[dst] = sign U[src].
     Node i -> its image j(i) with u_r kept and u_z negated; the film pressures in reversed
-    chain order; (V_in, V_out) -> (-V_out, -V_in). Residual rows transform alike (forces
-    like displacements, film balances like pressures, dV/dt - Q like V)."""
+    chain order; (V_in, V_out) -> (-V_out, -V_in); the friction work W -> W (v F keeps its
+    sign). Residual rows transform alike (forces like displacements, film balances like
+    pressures, dV/dt - Q like V)."""
 
     def __init__(self, step, j):
         lay = step.layout
         ud, pd, vd = lay.udofs, lay.film_dofs, step.vdofs
-        self.src = np.concatenate([ud[:, 0], ud[:, 1], pd, vd])
-        self.dst = np.concatenate([ud[j, 0], ud[j, 1], pd[::-1], vd[::-1]])
+        wd = [step.work.wd] if step.work is not None else []
+        self.src = np.concatenate([ud[:, 0], ud[:, 1], pd, vd, wd])
+        self.dst = np.concatenate([ud[j, 0], ud[j, 1], pd[::-1], vd[::-1], wd])
         self.sign = np.concatenate([np.ones(len(j)), -np.ones(len(j)), np.ones(pd.size),
-                                    -np.ones(2)])
+                                    -np.ones(2), np.ones(len(wd))])
         assert np.array_equal(np.sort(self.src), np.arange(step.n))     # every unknown
         assert np.array_equal(np.sort(self.dst), np.arange(step.n))
         self.n = step.n

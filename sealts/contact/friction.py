@@ -190,6 +190,18 @@ class RodFriction(Term):
         """Post-step hook: the return mapping of ``update``."""
         self.update(t, u)
 
+    # ---- a source of the friction work (sealts.contact.friction_work) ---------------------
+    @property
+    def friction_cols(self):
+        return self.cols
+
+    def friction_force(self, t, u, udot):
+        return self.total(t, u)
+
+    def friction_gradient(self, t, u, udot, shift):
+        """d(total friction)/dU on ``friction_cols`` (the residual subtracts the forces)."""
+        return -self.jacobian_values(t, u, udot, shift)
+
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
         np.subtract.at(f, self.side.uz, self.forces(t, u))

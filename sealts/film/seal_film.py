@@ -137,6 +137,7 @@ class SealFilmTerm(ChainFilm):
                                              v=1.0)
             rows.append(uz[srows])
             cols.append(scols)
+            self.friction_cols = scols          # the friction work's columns (the shear's)
         self.rows = np.concatenate(rows).astype(np.int64)
         self.cols = np.concatenate(cols).astype(np.int64)
         self.row_scale = self._reference_row_scale(h_ref)
@@ -253,6 +254,17 @@ class SealFilmTerm(ChainFilm):
         or not ``shear`` puts it into the residual)."""
         y, h, hd, p = self.film(t, u, udot)
         return self._shear(t, y, h, hd, p, 0.0)[0]
+
+    # ---- a source of the friction work (sealts.contact.friction_work) -------------------
+    def friction_force(self, t, u, udot):
+        """The total fluid shear on the seal (N, +z), as in the residual."""
+        return float(self.shear_forces(t, u, udot).sum())
+
+    def friction_gradient(self, t, u, udot, shift):
+        """d(total shear)/dU + shift d(total shear)/dU' on ``friction_cols``."""
+        y, h, hd, p = self.film(t, u, udot)
+        shift_hd = shift if (self.squeeze and udot is not None) else 0.0
+        return -self._shear(t, y, h, hd, p, shift_hd)[3]
 
     # ---- Term interface ------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):

@@ -354,9 +354,50 @@ class SealPaperFilmTerm(ChainFilm):
         dg[i, 2 + i] += dw * (v * cv - q) + w * v * dcv
         return (y, h, hd, p, v, k, shift_hd), dq, dg
 
+    def _shear_jacobian(self, y, hd, p, v, k, dg, shift_hd):
+        """d F_s,i / d(dense columns) + shift d/dU' (m x (2m + 2)), F_s the nodal shear
+        force of the residual (Eq. 32-34)."""
+        he, dhe, g = k[0], k[1], k[10]
+        m, A = self.side.m, self.side.area
+        i = np.arange(m)
+        uzc = m + 2 + i                                       # u_z,i's dense column
+        Le = np.diff(y)
+        Li = self.lengths(y)
+        tau, dd = self._tau(v, he, g, hd, y)
+        dtau = -0.5 * he[:, None] * dg
+        dtau[i, 2 + i] += -self.eta * v * dhe / he**2 - 0.5 * dhe * g
+        # Eq. 33: dd_e = (hd_b - hd_a) / dy_e, weighted onto the nodes
+        n_, e_, w_ = self._gd_node, self._gd_elem, -self.eta * self._gd_w
+        Lg = Le[e_]
+        for col, d in ((2 + e_ + 1, shift_hd / Lg), (2 + e_, -shift_hd / Lg),
+                       (uzc[e_ + 1], -dd[e_] / Lg), (uzc[e_], dd[e_] / Lg)):
+            np.add.at(dtau, (n_, col), w_ * d)
+        dF = A * Li[:, None] * dtau
+        dF[i, uzc[self.side.hi]] += 0.5 * A * tau
+        dF[i, uzc[self.side.lo]] -= 0.5 * A * tau
+        return dF
+
+    # ---- a source of the friction work (sealts.contact.friction_work) -------------------
+    @property
+    def friction_cols(self):
+        """The friction work's columns: c0, qd, u_r and u_z of the chain."""
+        return self.dense_cols
+
+    def friction_force(self, t, u, udot):
+        """The total fluid shear on the seal (N, +z), as in the residual (at the unknowns
+        c0, qd)."""
+        y, h, hd, p, v, k = self._flow(t, u, udot)
+        return float((self._tau(v, k[0], k[10], hd, y)[0] * self.side.area
+                      * self.lengths(y)).sum())
+
+    def friction_gradient(self, t, u, udot, shift):
+        """d(total shear)/dU + shift d(total shear)/dU' on ``friction_cols``."""
+        (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
+        return self._shear_jacobian(y, hd, p, v, k, dg, shift_hd).sum(0)
+
     def jacobian_values(self, t, u, udot, shift):
         (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
-        he, dhe, w, dw, g = k[0], k[1], k[2], k[3], k[10]
+        w, dw, g = k[2], k[3], k[10]
         m, A, al = self.side.m, self.side.area, self.alpha
         c0 = u[self.cdof]
         Le = np.diff(y)
@@ -387,18 +428,7 @@ class SealPaperFilmTerm(ChainFilm):
             dr = self.lengths(self.side.R + u[self.side.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
         if self.shear:
-            tau, dd = self._tau(v, he, g, hd, y)
-            dtau = -0.5 * he[:, None] * dg
-            dtau[i, 2 + i] += -self.eta * v * dhe / he**2 - 0.5 * dhe * g
-            # Eq. 33: dd_e = (hd_b - hd_a) / dy_e, weighted onto the nodes
-            n_, e_, w_ = self._gd_node, self._gd_elem, -self.eta * self._gd_w
-            Lg = Le[e_]
-            for col, d in ((2 + e_ + 1, shift_hd / Lg), (2 + e_, -shift_hd / Lg),
-                           (uzc[e_ + 1], -dd[e_] / Lg), (uzc[e_], dd[e_] / Lg)):
-                np.add.at(dtau, (n_, col), w_ * d)
-            dF = A * Li[:, None] * dtau
-            dF[i, uzc[self.side.hi]] += 0.5 * A * tau
-            dF[i, uzc[self.side.lo]] -= 0.5 * A * tau
+            dF = self._shear_jacobian(y, hd, p, v, k, dg, shift_hd)
             vals.append(-dF.ravel())                  # the residual subtracts the force
         return np.concatenate(vals)
 

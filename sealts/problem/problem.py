@@ -99,6 +99,9 @@ class Problem:
         self.fields = dict(fields or {})
         self.counters = Counters()
         self._set_defaults = []       # options set by _default_option, dropped after use
+        # more TS defaults of this problem (option name without prefix -> value); the
+        # command line and the scene's [petsc] table win
+        self.ts_defaults = {}
 
         if dofs is None:      # replicated: every rank has every dof, adds its own rows
             self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
@@ -341,6 +344,8 @@ class Problem:
             atol = self._owned(atol)
         ts.setTolerances(rtol=rtol, atol=atol)
         self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
+        for name, value in self.ts_defaults.items():
+            self._default_option(name, value)
         # a run whose steps shrink below 1e-12 of its span fails instead of crawling on
         self._default_option("ts_adapt_dt_min", repr(1e-12 * max(float(t_end - t0), 1e-300)))
         snes = ts.getSNES()

@@ -28,7 +28,10 @@ Its outputs (series, profiles, fields) are observers of the stroke step
 Leakage: Q_in enters the film at the pressure side, Q_out leaves it at the atmosphere side
 (Eq. 41); V_in and V_out (Eq. 42) are two more unknowns, dV/dt = Q
 (:class:`sealts.film.seal_film.LeakageTerm`), so TS integrates them with the film and
-V_in - V_out is the film's growth.
+V_in - V_out is the film's growth. The friction work W (N mm, the rod's power against the
+fluid shear and the rod friction, :class:`sealts.contact.friction_work.FrictionWork`) is
+one more, after them. The numbering (``model.partition.numbering``) places these scalars
+after the Section's fields.
 
 * solid friction (``stroke.friction``): :class:`sealts.contact.friction.RodFriction`, mu_s
   p_s on the asperity contact with an elastic slip gamma_crit, and
@@ -36,7 +39,13 @@ V_in - V_out is the film's growth.
   pressure on the groove's bottom and side walls with the same gamma_crit (without it the
   rod's friction rolls the O-ring in its frictionless groove); their anchors are updated
   by their post-step hooks after every accepted step (TS stops at the rod's reversals).
-  ``friction_groove`` in the series is the walls' axial friction force on the seal.
+  With ``stroke.friction_history = "state"`` the rod friction is instead
+  :class:`sealts.contact.slip_state_friction.SlipStateFriction`, its elastic slips the
+  ``rod_slip`` field, integrated by TS. ``friction_groove`` in the series is the walls'
+  axial friction force on the seal.
+
+* error control: the local error in the max norm over the unknowns (``Problem.ts_defaults``,
+  docs/design.md), each elastic slip to 1e-3 gamma_crit.
 
 * viscoelastic (``viscoelastic.prony``): the Prony terms of the hold
   (:class:`sealts.solid.viscoelastic_solid.ViscoelasticSolid`), classified over
@@ -52,9 +61,11 @@ Not yet in the stroke: updating the pressure penetration front during the stroke
 import numpy as np
 
 from ..contact.friction import RodFriction
+from ..contact.friction_work import FrictionWork
 from ..contact.groove_friction import GrooveFriction
 from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
+from ..contact.slip_state_friction import SlipStateFriction
 from ..core import Constraints
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
@@ -86,8 +97,13 @@ class StrokeProblem:
             scalars = ("V_in", "V_out") + (("c0", "qd") if fm.scheme == "paper" else ())
         # the model's distributed mesh with this step's fields: each rank assembles the
         # solid on its own cells, rank 0 the terms along the boundary (in serial dofs)
+        st = scene.stroke
+        rod_friction = st.friction and scene.asperity.mu_s > 0.0
+        slip_state = rod_friction and st.friction_history == "state"
+        if wet or rod_friction:
+            scalars += ("W",)                    # the friction work, last
         self.layout = lay = model.partition.numbering(prony=prony_size, film=wet,
-                                                      scalars=scalars)
+                                                      scalars=scalars, slip=slip_state)
         self.n = lay.n
         ud = lay.udofs
         axisym = model.axisym
@@ -128,12 +144,20 @@ class StrokeProblem:
                 self.leakage = LeakageTerm(self.film, self.vdofs)
             boundary += [self.film]
         self.friction = self.groove_friction = None
-        if scene.stroke.friction and a.mu_s > 0.0:
+        if slip_state:
+            self.friction = SlipStateFriction(self.rod, self.motion.v, lay.slip_dofs,
+                                              mu_s=a.mu_s, gamma_crit=st.gamma_crit,
+                                              n=st.friction_exponent)
+        elif rod_friction:
             self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
-                                        gamma_crit=scene.stroke.gamma_crit)
+                                        gamma_crit=st.gamma_crit)
         if scene.stroke.friction and scene.groove.mu > 0.0:
             self.groove_friction = GrooveFriction(self.groove, mu=scene.groove.mu,
                                                   gamma_crit=scene.stroke.gamma_crit)
+        # the friction work (fluid shear and rod friction) as a TS unknown
+        sources = [f for f in (self.film, self.friction) if f is not None]
+        self.work = (FrictionWork(lay.scalar_dofs["W"], self.motion.v, sources)
+                     if sources else None)
         self.load = None
         old = load
         if old is not None:
@@ -159,13 +183,20 @@ class StrokeProblem:
         self.problem = model.problem(
             self.n, self._terms(self.solid, self.prony, with_leakage=True),
             prefix="stroke_", fields=fields, dofs=lay)
+        # the local error in the max norm: every unknown (the leakage volumes, the film
+        # pressures at the contact) meets its own tolerance, where TSAdapt's default 2-norm
+        # averages it over all of them (benchmarks/stroke_sensitivity.md: with it, rtol
+        # changed by one part in a million moved the net leakage by 0.4 %, with the max norm
+        # by 0.01 %)
+        self.problem.ts_defaults["ts_adapt_wnormtype"] = "infinity"
 
     def _terms(self, solid, prony, with_leakage):
         """The problem's terms in its numbering: the guard, this rank's solid (and Prony
         term), rank 0's boundary terms (rod, groove, film, leakage, pressure, frictions)."""
         boundary = [t for t in (self.rod, self.groove, self.film,
                                 self.leakage if with_leakage else None, self.friction,
-                                self.groove_friction, self.load) if t is not None]
+                                self.groove_friction, self.load,
+                                self.work if with_leakage else None) if t is not None]
         return ([self.guard, solid] + ([prony] if prony is not None else [])
                 + self.layout.on_root(boundary))
 
@@ -178,8 +209,11 @@ class StrokeProblem:
                                            lay.film_dofs.size)
             if self.xdofs is not None:
                 U[self.xdofs] = self.film.constants(0.0, U)
-            # one small 1D problem, replicated on every rank (serial dofs)
-            held = np.concatenate([lay.udofs.ravel(), self.vdofs, lay.prony_dofs.ravel()])
+            # one small 1D problem, replicated on every rank (serial dofs): every unknown
+            # but the film's held
+            film = np.concatenate([lay.film_dofs] + ([self.xdofs] if self.xdofs is not None
+                                                     else []))
+            held = np.setdiff1d(np.arange(n), film)
             U = Problem(n, [self.film], comm=comm, constraints=Constraints(held, U[held]),
                         prefix="stroke_film_").solve_steady(U, 0.0)
             self.film.set_row_scale(0.0, U)
@@ -187,7 +221,9 @@ class StrokeProblem:
             fr.reset(0.0, U)                       # no elastic slip in the pressurised state
         # the long-term equilibrium with the film (the paper's step 2 ends with the
         # hydrostatic film); a viscoelastic seal starts relaxed from it
-        fixed = self.vdofs
+        # the integrals (V, W) and the slips z (zero, from the reset) held
+        fixed = np.concatenate([self.vdofs, lay.slip_dofs]
+                               + ([[self.work.wd]] if self.work is not None else []))
         solid = self.solid
         if self.prony is not None:
             solid = SolidTerm(self.model.mesh.X, self.model.mesh.conn[lay.cells],
@@ -267,23 +303,34 @@ class StrokeProblem:
         solid = float(self.friction.total(t, U)) if self.friction is not None else 0.0
         gf = self.groove_friction
         groove = gf.axial(t, U) if gf is not None else 0.0
+        work = float(U[self.work.wd]) if self.work is not None else 0.0
         return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
                 "friction_total": shear + solid, "friction_groove": groove,
                 "normal_load": load_fluid + load_asperity, "load_fluid": load_fluid,
                 "load_asperity": load_asperity, "Q_in": q_in, "Q_out": q_out,
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
-                "asperity_contact_length": length, "p_fluid_max": p_max}
+                "asperity_contact_length": length, "p_fluid_max": p_max,
+                "W_friction": work}
 
     def run(self, U0, t_end, dt0, rtol, output_times=(), observers=()):
         m = self.motion
         stops = sorted(set(output_times) | set(m.kinks(t_end)) | set(m.reversals(t_end)))
-        atol = 1e-6
+        # 1e-6 in each unknown's unit (mm, MPa, mm^3). The friction work is left out of
+        # the error estimate: its integrand v F is a function of the error-controlled state,
+        # and BDF integrates it with the state's steps (its own error would be measured
+        # against |W|, tens of thousands of N mm, or, near W = 0 at the start, an absolute
+        # tolerance that would only shorten the first steps)
+        atol = np.full(self.n, 1e-6)
+        if self.work is not None:
+            atol[self.work.wd] = 1e300
         if self.xdofs is not None:
             # the paper scheme's c0 and qd are algebraic flows, functions of U and U' like
             # the TS's U' (qd carries the breathing of the inlet wedge, fast at the start):
             # left out of the error estimate, which then covers the same unknowns as the
             # default scheme's (u, p, V)
-            atol = np.full(self.n, 1e-6)
             atol[self.xdofs] = 1e300
+        if self.layout.slip_dofs.size:
+            # the elastic slips (mm) to 1e-3 of gamma_crit: a sticking node's force to 1e-3
+            atol[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
         return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops, observers=observers,
                                       rtol=rtol, atol=atol)

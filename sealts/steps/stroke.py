@@ -6,9 +6,10 @@ volumes and gap of ``StrokeProblem.scalars``, with U' as the step's difference q
 then the solver's counts); at t = 0, each of stroke.output_times and t_end the profiles
 (stroke_profiles.csv) and the fields (stroke_fields.xdmf/.h5, a time series: displacement
 and film pressure on nodes, the Cauchy stresses on cells, with the Prony part in a
-viscoelastic stroke). The cycle's integrals (``CycleIntegrals``): the friction work, the
-trapezoid of the power F v over the accepted steps, and the transport per stroke direction,
-the steps' V_out increments summed by the sign of v.
+viscoelastic stroke). The cycle's integrals: the friction work W_friction, a TS unknown
+(:mod:`sealts.contact.friction_work`), and the transport per stroke direction
+(``CycleIntegrals``), the steps' V_out increments summed by the sign of v (TS stops at the
+reversals, so each step lies in one direction).
 """
 import time
 
@@ -36,18 +37,15 @@ class StrokeColumns:
 
 
 class CycleIntegrals:
-    """Friction work (N mm) and transport per direction (mm^3) over the accepted steps,
-    from the columns before it (friction_total, v, V_out); adds no column."""
+    """Transport per direction (mm^3) over the accepted steps, from the columns before it
+    (v, V_out); adds no column."""
 
     def __init__(self):
-        self.work, self.transport, self.last = 0.0, {1: 0.0, -1: 0.0}, None
+        self.transport, self.last = {1: 0.0, -1: 0.0}, None
 
     def __call__(self, t, U, info, row):
         if self.last is not None and t > self.last["t"]:
             prev = self.last
-            # the power F v the rod spends dragging the seal's surface
-            self.work += 0.5 * (t - prev["t"]) * (prev["friction_total"] * prev["v"]
-                                                  + row["friction_total"] * row["v"])
             way = 1 if prev["v"] + row["v"] > 0.0 else -1
             self.transport[way] += row["V_out"] - prev["V_out"]
         self.last = row
@@ -64,7 +62,8 @@ def seal_fields(model, stroke):
         disp = np.zeros((n_nodes, 3))
         disp[:, :2] = u[model.udofs]
         p = np.zeros(n_nodes)
-        p[lay.rod_nodes] = U[lay.film_dofs]          # none without the film
+        if lay.film_dofs.size:                      # none without the film
+            p[lay.rod_nodes] = U[lay.film_dofs]
         if stroke.viscoelastic is None:
             cells = stress_cells(model.full_solid(), u)
         else:
@@ -118,7 +117,7 @@ class Stroke(Step):
             "instroke_transport": integrals.transport[-1],
             "peak_friction_outstroke": float(np.abs(F[v > 0]).max()) if (v > 0).any() else 0.0,
             "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
-            "friction_work": integrals.work,
+            "friction_work": rows[-1]["W_friction"],
             "h_min": float(min(r["h_min"] for r in rows)),
             "steps_accepted": c.steps, "steps_rejected": c.rejected,
             "newton_iterations": c.newton, "linear_iterations": c.linear,
