@@ -9,7 +9,7 @@ from conftest import central_differences, scene
 
 @pytest.mark.parametrize("scheme, history", [("fv", "anchors"), ("paper", "state")])
 def test_work_row_jacobian(tmp_path, scheme, history):
-    """dW'/dU + shift dW'/dU' of the W row on the rod side's u_r, u_z, film pressures (and
+    """d/dU + shift d/dU' of the W row (its owner's dW/dt, the sources' -v F) on the rod side's u_r, u_z, film pressures (and
     the slips, the paper scheme's constants) against central differences in U and U', on a
     coarse O-ring chain spread from contact to open with film pressures and slips of both
     signs; bound 1e-6 of the row's largest entry."""
@@ -40,7 +40,7 @@ def test_work_row_jacobian(tmp_path, scheme, history):
     stroke.film.set_row_scale(0.0, U)
     Ud = rng.uniform(-1.0, 1.0, stroke.n) * 1e-3
     t, shift = 0.01, 700.0
-    p = Problem(stroke.n, [stroke.work])
+    p = Problem(stroke.n, [stroke.work] + stroke.work.sources)    # the row's owner and sources
     J = p.jacobian_dense(t, U, Ud, shift)
     blocks = {"ur": lay.udofs[c, 0], "uz": lay.udofs[c, 1], "p": lay.film_dofs}
     eps = {"ur": 1e-8, "uz": 1e-8, "p": 1e-7}

@@ -138,6 +138,8 @@ class RodFriction(Term):
         # d(-F_i)/d: u_r,i (p_s), u_z of the upper and lower neighbour (L_i), u_z,i (gamma)
         self.rows = np.concatenate([uz, uz, uz, uz]).astype(np.int64)
         self.cols = np.concatenate([sd.ur, uz[sd.hi], uz[sd.lo], uz]).astype(np.int64)
+        # the friction work's row (sealts.contact.friction_work), when attached
+        self.work, self.work_cols = None, self.cols.copy()
 
     # ---- state -----------------------------------------------------------------------------
     def slip(self, t, u):
@@ -190,28 +192,22 @@ class RodFriction(Term):
         """Post-step hook: the return mapping of ``update``."""
         self.update(t, u)
 
-    # ---- a source of the friction work (sealts.contact.friction_work) ---------------------
-    @property
-    def friction_cols(self):
-        return self.cols
-
-    def friction_force(self, t, u, udot):
-        return self.total(t, u)
-
-    def friction_gradient(self, t, u, udot, shift):
-        """d(total friction)/dU on ``friction_cols`` (the residual subtracts the forces)."""
-        return -self.jacobian_values(t, u, udot, shift)
-
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
-        np.subtract.at(f, self.side.uz, self.forces(t, u))
+        F = self.forces(t, u)
+        np.subtract.at(f, self.side.uz, F)
+        if self.work is not None:
+            f[self.work[0]] -= self.work[1](t) * F.sum()
 
     def jacobian_values(self, t, u, udot, shift):
         p, dp, L, phi, dphi = self._evaluate(t, u)
         k = self.mu(t) * self.side.area
         half = self.side.half
         # F = k p(h) L phi(gamma / gamma_crit); the residual subtracts F
-        return -np.concatenate([k * dp * L * phi,
+        vals = -np.concatenate([k * dp * L * phi,
                                 k * p * half * phi,
                                 -k * p * half * phi,
                                 -k * p * L * dphi / self.gamma_crit])
+        if self.work is None:
+            return vals
+        return np.concatenate([vals, self.work[1](t) * vals])    # d(-v sum F)

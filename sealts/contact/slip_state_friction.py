@@ -89,6 +89,9 @@ class SlipStateFriction(Term):
         uz, zd = sd.uz, self.zd
         self.rows = np.concatenate([uz, uz, uz, uz, zd, zd]).astype(np.int64)
         self.cols = np.concatenate([sd.ur, uz[sd.hi], uz[sd.lo], zd, zd, uz]).astype(np.int64)
+        # the friction work's row (sealts.contact.friction_work), when attached: the
+        # columns of the forces
+        self.work, self.work_cols = None, self.cols[:4 * sd.m].copy()
 
     # ---- state -----------------------------------------------------------------------------
     def slip(self, t, u):
@@ -118,21 +121,12 @@ class SlipStateFriction(Term):
         return bouc_wen_rate(w + np.zeros(self.side.m), u[self.zd] / self.gamma_crit,
                              self.n, self.eps)
 
-    # ---- a source of the friction work (sealts.contact.friction_work) ---------------------
-    @property
-    def friction_cols(self):
-        return self.cols[:4 * self.side.m]          # the u_z rows' columns
-
-    def friction_force(self, t, u, udot):
-        return self.total(t, u)
-
-    def friction_gradient(self, t, u, udot, shift):
-        """d(total friction)/dU on ``friction_cols`` (the residual subtracts the forces)."""
-        return -self.jacobian_values(t, u, udot, shift)[:4 * self.side.m]
-
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
-        np.subtract.at(f, self.side.uz, self.forces(t, u))
+        F = self.forces(t, u)
+        np.subtract.at(f, self.side.uz, F)
+        if self.work is not None:
+            f[self.work[0]] -= self.work[1](t) * F.sum()
         g = self.rates(t, u, udot)[0]
         zdot = 0.0 if udot is None else udot[self.zd]
         np.add.at(f, self.zd, zdot - g)
@@ -145,6 +139,9 @@ class SlipStateFriction(Term):
         k = self.mu(t) * sd.area
         _, dg_dw, dg_dx = self.rates(t, u, udot)
         a = shift
-        return np.concatenate([-k * dp * L * x, -k * p * sd.half * x, k * p * sd.half * x,
-                               -k * p * L / self.gamma_crit,
-                               a - dg_dx / self.gamma_crit, a * dg_dw])
+        force = np.concatenate([-k * dp * L * x, -k * p * sd.half * x, k * p * sd.half * x,
+                                -k * p * L / self.gamma_crit])
+        vals = [force, a - dg_dx / self.gamma_crit, a * dg_dw]
+        if self.work is not None:
+            vals.append(self.work[1](t) * force)                  # d(-v sum F)
+        return np.concatenate(vals)

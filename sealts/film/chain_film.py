@@ -43,6 +43,7 @@ class ChainFilm(Term):
         self.p_first = of_time(p_in if first else p_out)
         self.p_last = of_time(p_out if first else p_in)
         self.pressurised_end = pressurised_end
+        self.work = None       # (dof, v) of the friction work's row: sealts.contact.friction_work
 
     def _ffargs(self):
         f = self.ff

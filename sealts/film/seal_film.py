@@ -131,13 +131,14 @@ class SealFilmTerm(ChainFilm):
             rows += [uz, uz, uz]
             cols += [pd, ur[hi], ur[lo]]
         self.shear, self.beta = shear, beta
+        self.work_cols = np.zeros(0, np.int64)
         if shear:  # the pattern of the shear force, from the code that computes its values
             dummy = np.zeros(m)
             _, srows, scols, _ = self._shear(0.0, side.Z, dummy + 1e-3, dummy, dummy, 1.0,
                                              v=1.0)
             rows.append(uz[srows])
             cols.append(scols)
-            self.friction_cols = scols          # the friction work's columns (the shear's)
+            self.work_cols = scols       # the friction work's columns (the shear's)
         self.rows = np.concatenate(rows).astype(np.int64)
         self.cols = np.concatenate(cols).astype(np.int64)
         self.row_scale = self._reference_row_scale(h_ref)
@@ -255,17 +256,6 @@ class SealFilmTerm(ChainFilm):
         y, h, hd, p = self.film(t, u, udot)
         return self._shear(t, y, h, hd, p, 0.0)[0]
 
-    # ---- a source of the friction work (sealts.contact.friction_work) -------------------
-    def friction_force(self, t, u, udot):
-        """The total fluid shear on the seal (N, +z), as in the residual."""
-        return float(self.shear_forces(t, u, udot).sum())
-
-    def friction_gradient(self, t, u, udot, shift):
-        """d(total shear)/dU + shift d(total shear)/dU' on ``friction_cols``."""
-        y, h, hd, p = self.film(t, u, udot)
-        shift_hd = shift if (self.squeeze and udot is not None) else 0.0
-        return -self._shear(t, y, h, hd, p, shift_hd)[3]
-
     # ---- Term interface ------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
         y, h, hd, p = self.film(t, u, udot)
@@ -279,8 +269,10 @@ class SealFilmTerm(ChainFilm):
         if self.surface_normal:
             np.subtract.at(f, self.side.uz, self.axial_forces(t, u))
         if self.shear:
-            np.subtract.at(f, self.side.uz,
-                           self._shear(t, y, h, hd, p, 0.0, fluxes=fluxes)[0])
+            F = self._shear(t, y, h, hd, p, 0.0, fluxes=fluxes)[0]
+            np.subtract.at(f, self.side.uz, F)
+            if self.work is not None:              # the friction work's row: -v sum F
+                f[self.work[0]] -= self.work[1](t) * F.sum()
 
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
@@ -302,8 +294,11 @@ class SealFilmTerm(ChainFilm):
             dr = self.lengths(self.side.R + u[self.side.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
         if self.shear:
-            vals.append(self._shear(t, y, h, hd, p, shift_hd,
-                                    fluxes=(q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd))[3])
+            sv = self._shear(t, y, h, hd, p, shift_hd,
+                             fluxes=(q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd))[3]
+            vals.append(sv)
+            if self.work is not None:              # d(-v sum F) = v times d(-F)
+                vals.append(self.work[1](t) * sv)
         return np.concatenate(vals)
 
 

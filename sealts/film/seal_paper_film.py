@@ -335,6 +335,8 @@ class SealPaperFilmTerm(ChainFilm):
         if self.shear:
             F = self._tau(v, he, g, hd, y)[0] * self.side.area * self.lengths(y)
             np.subtract.at(f, self.side.uz, F)
+            if self.work is not None:              # the friction work's row: -v sum F
+                f[self.work[0]] -= self.work[1](t) * F.sum()
 
     def derivatives(self, t, u, udot, shift):
         """The state, and dq_i, dg_i by the dense columns (c0, qd, u_r, u_z of the chain)
@@ -377,23 +379,10 @@ class SealPaperFilmTerm(ChainFilm):
         dF[i, uzc[self.side.lo]] -= 0.5 * A * tau
         return dF
 
-    # ---- a source of the friction work (sealts.contact.friction_work) -------------------
     @property
-    def friction_cols(self):
+    def work_cols(self):
         """The friction work's columns: c0, qd, u_r and u_z of the chain."""
         return self.dense_cols
-
-    def friction_force(self, t, u, udot):
-        """The total fluid shear on the seal (N, +z), as in the residual (at the unknowns
-        c0, qd)."""
-        y, h, hd, p, v, k = self._flow(t, u, udot)
-        return float((self._tau(v, k[0], k[10], hd, y)[0] * self.side.area
-                      * self.lengths(y)).sum())
-
-    def friction_gradient(self, t, u, udot, shift):
-        """d(total shear)/dU + shift d(total shear)/dU' on ``friction_cols``."""
-        (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
-        return self._shear_jacobian(y, hd, p, v, k, dg, shift_hd).sum(0)
 
     def jacobian_values(self, t, u, udot, shift):
         (y, h, hd, p, v, k, shift_hd), _, dg = self.derivatives(t, u, udot, shift)
@@ -430,6 +419,8 @@ class SealPaperFilmTerm(ChainFilm):
         if self.shear:
             dF = self._shear_jacobian(y, hd, p, v, k, dg, shift_hd)
             vals.append(-dF.ravel())                  # the residual subtracts the force
+            if self.work is not None:                 # d(-v sum F)
+                vals.append(-self.work[1](t) * dF.sum(0))
         return np.concatenate(vals)
 
 
