@@ -151,3 +151,29 @@ def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
     r, _ = run(other, tmp_path / "c")
     assert r.returncode == 2 and r.stderr.count("\n") == 1
     assert "start.state" in r.stderr and "another mesh" in r.stderr
+
+
+def test_tolerances_per_unknown_and_from_the_command_line(stroke):
+    """The leakage volumes are held to rtol V_c absolutely (V_c = A L h_c, here 2 pi 25 mm
+    x the rod side's length x h_mix), the friction work not at all, every other unknown to
+    rtol and 1e-6; -stroke_ts_rtol / -stroke_ts_atol replace the scene's values."""
+    from petsc4py import PETSc
+    step = stroke[0]
+    side = step.side
+    assert step.volume_scale == pytest.approx(
+        2 * np.pi * 25.0 * (side.Z.max() - side.Z.min()) * 7e-4, rel=1e-6)
+    rt, at = step.tolerances(1e-3)
+    v, w = step.vdofs, step.work.wd if step.work is not None else []
+    assert (rt[v] == 0.0).all() and at[v] == pytest.approx(1e-3 * step.volume_scale)
+    assert (at[w] >= 1e300).all()
+    rest = np.setdiff1d(np.arange(step.n), np.concatenate([v, np.atleast_1d(w)]).astype(int))
+    assert (rt[rest] == 1e-3).all() and (at[rest] == 1e-6).all()
+    opts = PETSc.Options("stroke_")
+    opts["ts_rtol"], opts["ts_atol"] = "1e-5", "1e-9"
+    try:
+        rt, at = step.tolerances(1e-3)
+    finally:
+        opts.delValue("ts_rtol")
+        opts.delValue("ts_atol")
+    assert (rt[rest] == 1e-5).all() and (at[rest] == 1e-9).all()
+    assert at[v] == pytest.approx(1e-5 * step.volume_scale)

@@ -60,6 +60,8 @@ def _solver_in_force(snes, ts=None):
         out["pc_factor_mat_solver_type"] = pc.getFactorSolverType()
     if ts is not None:
         ts_rtol, ts_atol = ts.getTolerances()
+        if not np.isscalar(ts_rtol):      # per unknown: the run's rtol is the largest
+            ts_rtol = ts_rtol.max()[1]
         out.update(ts_type=ts.getType(), ts_rtol=ts_rtol,
                    ts_atol=ts_atol if np.isscalar(ts_atol) else "per unknown")
     return out
@@ -342,10 +344,12 @@ class Problem:
         ts.setErrorIfStepFails(False)  # report a TS that gives up through its reason
         if np.ndim(atol):        # one per unknown, full and in serial order
             atol = self._owned(atol)
+        if np.ndim(rtol):
+            rtol = self._owned(rtol)
         ts.setTolerances(rtol=rtol, atol=atol)
-        self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
         for name, value in self.ts_defaults.items():
             self._default_option(name, value)
+        self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
         # a run whose steps shrink below 1e-12 of its span fails instead of crawling on
         self._default_option("ts_adapt_dt_min", repr(1e-12 * max(float(t_end - t0), 1e-300)))
         snes = ts.getSNES()

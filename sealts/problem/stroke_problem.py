@@ -44,8 +44,9 @@ after the Section's fields.
   ``rod_slip`` field, integrated by TS. ``friction_groove`` in the series is the walls'
   axial friction force on the seal.
 
-* error control: the local error in the max norm over the unknowns (``Problem.ts_defaults``,
-  docs/design.md), each elastic slip to 1e-3 gamma_crit.
+* error control: the local error in the max norm over the unknowns, with a PI step-size
+  controller (``Problem.ts_defaults``, docs/design.md); each unknown's tolerance in its
+  own unit, the leakage volumes' absolute (``StrokeProblem.tolerances``).
 
 * viscoelastic (``viscoelastic.prony``): the Prony terms of the hold
   (:class:`sealts.solid.viscoelastic_solid.ViscoelasticSolid`), classified over
@@ -189,6 +190,12 @@ class StrokeProblem:
         # changed by one part in a million moved the net leakage by 0.4 %, with the max norm
         # by 0.01 %)
         self.problem.ts_defaults["ts_adapt_wnormtype"] = "infinity"
+        # a PI step-size controller (Soederlind's H211PI, TSADAPTDSP): where the error
+        # estimate jumps (the stick-slide knees of the friction), TSAdapt's basic
+        # controller alternates growth and rejection; the PI controller's memory of the
+        # last step damps it (benchmarks/stroke_sensitivity.md: a fifth of the rejections)
+        self.problem.ts_defaults["ts_adapt_type"] = "dsp"
+        self.problem.ts_defaults["ts_adapt_dsp_filter"] = "h211pi"
 
     def _terms(self, solid, prony, with_leakage):
         """The problem's terms in its numbering: the guard, this rank's solid (and Prony
@@ -312,25 +319,51 @@ class StrokeProblem:
                 "asperity_contact_length": length, "p_fluid_max": p_max,
                 "W_friction": work}
 
+    @property
+    def volume_scale(self):
+        """V_c = A L_film h_c (mm^3): a film of the contact law's contact gap h_c
+        (``contact_gap``) over the rod side's reference length, the volume whose fraction
+        rtol each step may err by in V_in and V_out."""
+        side = self.side
+        return side.area * float(np.ptp(side.Z)) * self.model.law.contact_gap
+
+    def tolerances(self, rtol, atol=1e-6):
+        """TS's local-error tolerances per unknown, (rtol, atol) arrays in the serial
+        numbering: each unknown's error e_i is held to atol_i + rtol_i |U_i| in the max norm.
+
+        * displacements (mm), film pressures (MPa): rtol, and atol (1e-6 mm, 1e-6 MPa);
+        * the leakage volumes V_in, V_out (mm^3): atol = rtol V_c (``volume_scale``) and no
+          relative part. The net leakage is the small difference of two transports of tens
+          of mm^3: a tolerance of rtol |V| let every mid-stroke step err by 0.05 mm^3 and
+          moved the net leakage by 2 % at rtol 1e-3 (benchmarks/stroke_sensitivity.md);
+        * the elastic slips of the rod friction state (mm): 1e-3 gamma_crit, a sticking
+          node's force to 1e-3;
+        * left out (atol 1e300): the friction work W, whose integrand v F is a function of
+          the error-controlled state (its own error would be measured against |W|, tens of
+          thousands of N mm), and the paper scheme's c0 and qd, algebraic flows.
+
+        ``-stroke_ts_rtol`` and ``-stroke_ts_atol`` on the command line replace ``rtol``
+        and ``atol`` here (PETSc would otherwise ignore them beside per-unknown vectors).
+        """
+        from petsc4py import PETSc
+        opts = PETSc.Options(self.problem.prefix)
+        rtol = opts.getReal("ts_rtol", float(rtol))
+        atol = opts.getReal("ts_atol", float(atol))
+        rt, at = np.full(self.n, rtol), np.full(self.n, atol)
+        if self.work is not None:
+            at[self.work.wd] = 1e300
+        if self.xdofs is not None:
+            at[self.xdofs] = 1e300
+        if self.layout.slip_dofs.size:
+            at[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
+        if self.vdofs.size:
+            rt[self.vdofs] = 0.0
+            at[self.vdofs] = rtol * self.volume_scale
+        return rt, at
+
     def run(self, U0, t_end, dt0, rtol, output_times=(), observers=()):
         m = self.motion
         stops = sorted(set(output_times) | set(m.kinks(t_end)) | set(m.reversals(t_end)))
-        # 1e-6 in each unknown's unit (mm, MPa, mm^3). The friction work is left out of
-        # the error estimate: its integrand v F is a function of the error-controlled state,
-        # and BDF integrates it with the state's steps (its own error would be measured
-        # against |W|, tens of thousands of N mm, or, near W = 0 at the start, an absolute
-        # tolerance that would only shorten the first steps)
-        atol = np.full(self.n, 1e-6)
-        if self.work is not None:
-            atol[self.work.wd] = 1e300
-        if self.xdofs is not None:
-            # the paper scheme's c0 and qd are algebraic flows, functions of U and U' like
-            # the TS's U' (qd carries the breathing of the inlet wedge, fast at the start):
-            # left out of the error estimate, which then covers the same unknowns as the
-            # default scheme's (u, p, V)
-            atol[self.xdofs] = 1e300
-        if self.layout.slip_dofs.size:
-            # the elastic slips (mm) to 1e-3 of gamma_crit: a sticking node's force to 1e-3
-            atol[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
+        rtol, atol = self.tolerances(rtol)
         return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops, observers=observers,
                                       rtol=rtol, atol=atol)
