@@ -153,7 +153,20 @@ def main(argv=None):
         if isinstance(e, SolveError):
             print(f"solve error: {e}", file=sys.stderr)
             return 3
+        if type(e).__module__.startswith("petsc4py"):   # a bad option value, mostly
+            from petsc4py import PETSc
+            PETSc.Options()["options_left"] = "no"      # the run stopped: nothing to warn
+            print(f"PETSc error: {petsc_message(e)}", file=sys.stderr)
+            return 4
         raise
+
+
+def petsc_message(error):
+    """One line from a petsc4py Error: PETSc's own last message ("Unknown TSAdapt type
+    "foo" given"), without the call stack's "Function() at file:line" lines."""
+    lines = [ln.split("]", 1)[-1].strip() for ln in str(error).splitlines()[1:]]
+    said = [ln for ln in lines if ln and "() at " not in ln and not ln.startswith("See ")]
+    return (said[-1] if said else "") + f" ({str(error).splitlines()[0]})"
 
 
 if __name__ == "__main__":

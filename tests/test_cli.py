@@ -96,6 +96,20 @@ def test_diverging_solve_is_one_line_exit_3(tmp_path):
     assert "Traceback" not in r.stderr
 
 
+@pytest.mark.parametrize("option, value, named", [
+    ("-ts_adapt_type", "foo", 'Unknown TSAdapt type "foo"'),
+    ("-snes_linesearch_type", "nope", "Line Search type nope"),
+    ("-ts_rtol", "abc", "abc has no numeric value")])
+def test_bad_petsc_option_value_is_one_line_exit_4(tmp_path, option, value, named):
+    """An invalid value of a PETSc option (command line or the scene's [petsc] table) is one
+    line naming it, not PETSc's call stack and a Python traceback."""
+    r = sealts("run", str(CONFIGS / "slider.toml"), "-o", str(tmp_path), option, value)
+    assert r.returncode == 4, (r.stdout, r.stderr)
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("PETSc error: "), r.stderr
+    assert named in lines[0]
+
+
 def test_help_shows_petsc_help(tmp_path):
     r = sealts("run", "-o", str(tmp_path), "-help")
     assert r.returncode == 0, r.stderr

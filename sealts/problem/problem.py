@@ -359,8 +359,10 @@ class Problem:
         self._default_linear_solver(snes.getKSP())
         if monitor is not None:
             ts.setMonitor(monitor)
-        ts.setFromOptions()
-        self._drop_defaults()
+        try:
+            ts.setFromOptions()
+        finally:
+            self._drop_defaults()
         self._set_splits(ts.getSNES().getKSP())
         SOLVERS[self.prefix or ""] = _solver_in_force(ts.getSNES(), ts)
         return ts
