@@ -151,14 +151,20 @@ def main(argv=None):
     except Exception as e:  # solver failures are reported, not dumped
         from .core import SolveError
         if isinstance(e, SolveError):
+            _quiet_petsc()
             print(f"solve error: {e}", file=sys.stderr)
             return 3
         if type(e).__module__.startswith("petsc4py"):   # a bad option value, mostly
-            from petsc4py import PETSc
-            PETSc.Options()["options_left"] = "no"      # the run stopped: nothing to warn
+            _quiet_petsc()
             print(f"PETSc error: {petsc_message(e)}", file=sys.stderr)
             return 4
         raise
+
+
+def _quiet_petsc():
+    """A run that stopped has options it never read: PETSc need not warn about them."""
+    from petsc4py import PETSc
+    PETSc.Options()["options_left"] = "no"
 
 
 def petsc_message(error):

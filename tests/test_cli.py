@@ -21,7 +21,7 @@ def test_slider_run_writes_the_output_contract(tmp_path):
     assert r.returncode == 0, r.stderr
     summary = Results(out).summary
     res = summary["results_t0"]
-    assert summary["scene"] == "slider"
+    assert summary["scene"] == "slider" and summary["status"] == "finished"
     for key in ("wall_time_s", "steps_accepted", "steps_rejected", "newton_iterations",
                 "linear_iterations"):
         assert key in summary
@@ -94,6 +94,10 @@ def test_diverging_solve_is_one_line_exit_3(tmp_path):
     assert r.returncode == 3, (r.stdout, r.stderr)
     assert r.stderr.startswith("solve error: steady Newton solve diverged")
     assert "Traceback" not in r.stderr
+    # the failed run still writes its summary: status, the failing step and why
+    summary = Results(tmp_path).summary
+    assert summary["status"] == "failed"
+    assert "SolveError: steady Newton solve diverged" in summary["error"]
 
 
 @pytest.mark.parametrize("option, value, named", [

@@ -89,15 +89,33 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
         state.say(f"mesh: {model.mesh.X.shape[0]} nodes, {model.mesh.conn.shape[0]} quads, "
                   f"{model.n} unknowns" + (f"; cells per rank {cells}" if len(cells) > 1
                                            else ""), force=True)
-    run_steps(steps_for(scene, command), state)
+    def finish(status, error=None):
+        try:
+            body = _summary(state, command)
+        except Exception:        # a run that failed before it had a state to summarise
+            if error is None:
+                raise
+            body = {"scene": scene.name, "source": scene.source,
+                    "analysis": " + ".join(state.done)}
+        summary = {"status": status, **({"error": error} if error else {}), **body}
+        summary["wall_time_s"] = time.perf_counter() - t_wall
+        if writer.root:          # git runs once, on rank 0, which alone writes
+            summary["provenance"] = provenance(scene, petsc_options or {})
+        writer.summary(summary)
+        return summary
+
+    steps = steps_for(scene, command)
+    try:
+        run_steps(steps, state)
+    except Exception as e:
+        # a failed run still says what it did: the steps done, their counts and parts,
+        # the step that failed and why ("status": "failed"); the series written so far stay
+        failed = next((st.name for st in steps if st.name not in state.done), "")
+        finish("failed", f"{failed}: {type(e).__name__}: {e}".splitlines()[0])
+        raise
     if model is not None and command == "run" and writer.root:
         write_fields(str(writer.dir / "fields.xdmf"), model, state.u)
-    summary = _summary(state, command)
-    summary["wall_time_s"] = time.perf_counter() - t_wall
-    if writer.root:          # git runs once, on rank 0, which alone writes
-        summary["provenance"] = provenance(scene, petsc_options or {})
-    writer.summary(summary)
-    return summary
+    return finish("finished")
 
 
 def _summary(state, command):
