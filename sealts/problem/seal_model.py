@@ -139,12 +139,13 @@ class SealModel:
 
         return RodSideGuard(side, self.law.contact_gap, note)
 
-    def problem(self, n, terms, **kw):
+    def problem(self, n, terms, linesearch="basic", **kw):
         """A Problem of this seal's terms on its communicator: the basic line search (the
         residual norm is a poor merit function for a near-incompressible solid, see
         :class:`sealts.problem.Problem`) and Newton converged to NEWTON_ATOL of the force
-        scale. ``kw``: prefix, constraints, fields, dofs."""
-        return Problem(n, terms, comm=self.comm, linesearch="basic",
+        scale. ``linesearch``: another default line search (a steady solve without TS's
+        step rejection behind it). ``kw``: prefix, constraints, fields, dofs."""
+        return Problem(n, terms, comm=self.comm, linesearch=linesearch,
                        snes_atol=NEWTON_ATOL * self.force_scale, **kw)
 
     def walls(self):

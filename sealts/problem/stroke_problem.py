@@ -237,9 +237,12 @@ class StrokeProblem:
                               self.model.material, self.model.axisym, udofs=lay.udofs_local)
             fixed = np.concatenate([fixed, lay.prony_dofs[lay.cells].ravel()])
         loc, mine = lay.local(fixed)
+        # one steady Newton solve with nothing behind it (no TS to retry smaller): the
+        # backtracking line search. With full steps the film's switch-on at 20 MPa sent
+        # the second iterate to a residual of 1e17 (DIVERGED_DTOL)
         start = self.model.problem(n, self._terms(solid, None, with_leakage=False),
                                    constraints=Constraints(loc, U[fixed][mine]),
-                                   prefix="stroke_start_", dofs=lay)
+                                   prefix="stroke_start_", dofs=lay, linesearch="bt")
         U = start.solve_steady(U, 0.0)
         self.problem.counters.newton += start.counters.newton
         self._relaxed_from = U

@@ -1,0 +1,167 @@
+"""Stress matrix of the stroke: does every operating point finish, and if not, why and where?
+
+Runs ``sealts run`` on variants of ``configs/oring_stroke.toml`` (the paper's O-ring, one
+10 s sine cycle at 500 mm/s) one factor at a time, each in its own process with a time
+limit, and prints one table row per case: finished or the error (the failing step and the
+solver's reason, from ``summary.json``), accepted and rejected stroke steps, Newton
+iterations, min h (um, negative: the seal's mean plane past the rod's), peak friction,
+net leakage, any NaN or Inf in the series, and wall time. ``--out FILE`` also writes the
+table as Markdown with the machine's load. Usage:
+
+    .venv/bin/python scripts/stress.py [--factors pressure,speed,...] [--mesh 0.05 0.2]
+        [--timeout 900] [--out benchmarks/stress.md] [--list]
+
+Factors (``--list`` prints the cases): ``pressure`` p_in 0, 1, 5, 10, 20, 30, 40 MPa;
+``speed`` amplitudes 1, 100, 2000 mm/s; ``rough`` h_mix a tenth (a smoother rod) and
+ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction;
+``rtol`` 1e-2 and 1e-4. Issue 16 asks for more (velocity tables, back pressure, the
+rectangular ring, planar, a 15 h hold, flow factors, three meshes); add a factor as one
+entry of FACTORS.
+"""
+import argparse
+import copy
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+import tomllib
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+BASE = ROOT / "configs" / "oring_stroke.toml"
+
+FACTORS = {
+    "pressure": [(f"p_in {p:g} MPa", {"fluid": {"p_in": float(p)}})
+                 for p in (0, 1, 5, 10, 20, 30, 40)],
+    "speed": [(f"v_max {v:g} mm/s", {"stroke": {"v_max": float(v)}}) for v in (1, 100, 2000)],
+    "rough": [("h_mix 7e-5 mm (smooth rod)", {"asperity": {"h_mix": 7e-5}}),
+              ("h_mix 7e-3 mm", {"asperity": {"h_mix": 7e-3}})],
+    "friction": [("mu 0.05", {"asperity": {"mu_s": 0.05}, "groove": {"mu": 0.05}}),
+                 ("mu 0.5", {"asperity": {"mu_s": 0.5}, "groove": {"mu": 0.5}}),
+                 ("no friction", {"stroke": {"friction": False}})],
+    "rtol": [("rtol 1e-2", {"stroke": {"rtol": 1e-2}}), ("rtol 1e-4", {"stroke": {"rtol": 1e-4}})],
+}
+
+
+def toml_value(v):
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    return repr(v)
+
+
+def scene_text(table):
+    """TOML text of a scene table of scalars and one level of sections."""
+    lines = [f"{k} = {toml_value(v)}" for k, v in table.items() if not isinstance(v, dict)]
+    for sec, values in table.items():
+        if isinstance(values, dict):
+            lines += ["", f"[{sec}]"] + [f"{k} = {toml_value(v)}" for k, v in values.items()]
+    return "\n".join(lines) + "\n"
+
+
+def case_table(overrides, mesh):
+    table = copy.deepcopy(tomllib.loads(BASE.read_text()))
+    table.setdefault("mesh", {}).update({"h_contact": mesh[0], "h_bulk": mesh[1],
+                                         "cache": str(ROOT / "meshes")})
+    table.setdefault("output", {}).update({"plot": False, "progress": False})
+    for sec, values in overrides.items():
+        table.setdefault(sec, {}).update(values)
+    return table
+
+
+def series_stats(path):
+    """(min h in um, any non-finite value) of a series.csv."""
+    if not path.exists():
+        return math.nan, False
+    h_min, bad = math.inf, False
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            vals = [float(x) for x in row.values() if x not in ("", None)]
+            bad |= not all(math.isfinite(x) for x in vals)
+            if "h_min" in row:
+                h_min = min(h_min, float(row["h_min"]) * 1e3)
+    return h_min, bad
+
+
+def run_case(name, overrides, mesh, timeout, work):
+    d = work / "".join(c if c.isalnum() else "_" for c in name)
+    d.mkdir(parents=True, exist_ok=True)
+    scene = d / "scene.toml"
+    scene.write_text(scene_text(case_table(overrides, mesh)))
+    t0 = time.perf_counter()
+    try:
+        r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(d / "out")],
+                           capture_output=True, text=True, cwd=ROOT, timeout=timeout)
+        rc, err = r.returncode, r.stderr.strip().splitlines()[-1:] or [""]
+    except subprocess.TimeoutExpired:
+        rc, err = None, [f"time limit {timeout:g} s"]
+    wall = time.perf_counter() - t0
+    row = {"case": name, "status": "finished" if rc == 0 else "FAILED", "wall s": wall}
+    summ = d / "out" / "summary.json"
+    s = json.loads(summ.read_text()) if summ.exists() else {}
+    st = s.get("stroke", {})
+    if rc != 0:
+        row["why"] = s.get("error", err[0])[:160]
+    row.update({"accepted": st.get("steps_accepted", ""), "rejected": st.get("steps_rejected", ""),
+                "Newton": st.get("newton_iterations", ""),
+                "net mm^3": st.get("leakage_out", ""),
+                "F out / in N": (f"{st['peak_friction_outstroke']:.4g} / "
+                                 f"{st['peak_friction_instroke']:.4g}") if st else ""})
+    h_min, bad = series_stats(d / "out" / "series.csv")
+    row["min h um"], row["NaN/Inf"] = h_min, "yes" if bad else "no"
+    return row
+
+
+COLS = ["case", "status", "accepted", "rejected", "Newton", "min h um", "net mm^3",
+        "F out / in N", "NaN/Inf", "wall s", "why"]
+
+
+def fmt(v):
+    if isinstance(v, float):
+        return "" if math.isnan(v) else f"{v:.4g}"
+    return str(v)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--factors", default="pressure")
+    ap.add_argument("--mesh", nargs=2, type=float, default=(0.05, 0.2),
+                    metavar=("H_CONTACT", "H_BULK"))
+    ap.add_argument("--timeout", type=float, default=900.0, help="per case, s")
+    ap.add_argument("--out", help="also write the table (Markdown) to this file")
+    ap.add_argument("--work", default=str(ROOT / "results" / "stress"))
+    ap.add_argument("--list", action="store_true")
+    args = ap.parse_args()
+    unknown = [f for f in args.factors.split(",") if f not in FACTORS]
+    if unknown:
+        sys.exit(f"stress.py: unknown factor {unknown[0]!r} (one of {', '.join(FACTORS)})")
+    cases = [c for f in args.factors.split(",") for c in FACTORS[f]]
+    if args.list:
+        for name, over in cases:
+            print(f"{name:<32} {over}")
+        return
+    print(" | ".join(COLS))
+    rows = []
+    for name, over in cases:
+        row = run_case(name, over, args.mesh, args.timeout, Path(args.work))
+        rows.append(row)
+        print(" | ".join(fmt(row.get(c, "")) for c in COLS), flush=True)
+    if args.out:
+        load = os.getloadavg()
+        head = (f"# Stress matrix (scripts/stress.py --factors {args.factors})\n\n"
+                f"The paper's O-ring cycle (configs/oring_stroke.toml) on the {args.mesh[0]:g} / "
+                f"{args.mesh[1]:g} mm mesh, one factor changed per row; measured "
+                f"{time.strftime('%Y-%m-%d')}, load average {load[0]:.2f} at the end.\n\n")
+        table = ["| " + " | ".join(COLS) + " |", "|" + "---|" * len(COLS)]
+        table += ["| " + " | ".join(fmt(r.get(c, "")) for c in COLS) + " |" for r in rows]
+        Path(args.out).write_text(head + "\n".join(table) + "\n")
+
+
+if __name__ == "__main__":
+    main()
