@@ -104,6 +104,9 @@ class Problem:
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
+        # c of sealts.problem.newton_test: a stage's Newton solve also converges once its
+        # correction is below c times TS's error tolerance of every unknown (None: off)
+        self.update_test = None
 
         if dofs is None:      # replicated: every rank has every dof, adds its own rows
             self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
@@ -363,6 +366,9 @@ class Problem:
             ts.setFromOptions()
         finally:
             self._drop_defaults()
+        if self.update_test is not None:   # after setFromOptions: the tolerances in force
+            from .newton_test import UpdateTest
+            ts.getSNES().setConvergenceTest(UpdateTest(ts, self.update_test))
         self._set_splits(ts.getSNES().getKSP())
         SOLVERS[self.prefix or ""] = _solver_in_force(ts.getSNES(), ts)
         return ts

@@ -196,6 +196,9 @@ class StrokeProblem:
         # cycle takes 1,147 + 99 steps for 862 + 251 and as many Newton iterations, and
         # lands nearer the converged answer (benchmarks/stroke_sensitivity.md)
         self.problem.ts_defaults["ts_adapt_safety"] = "0.6"
+        # a stage's Newton solve is converged by the residual's tests or once its correction
+        # is below 1e-3 of every unknown's error tolerance (sealts.problem.newton_test)
+        self.problem.update_test = 1e-3
 
     def _terms(self, solid, prony, with_leakage):
         """The problem's terms in its numbering: the guard, this rank's solid (and Prony

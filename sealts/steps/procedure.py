@@ -110,7 +110,7 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
     except Exception as e:
         # a failed run still says what it did: the steps done, their counts and parts,
         # the step that failed and why ("status": "failed"); the series written so far stay
-        failed = next((st.name for st in steps if st.name not in state.done), "")
+        failed = next((st.name for st in steps if st.name and st.name not in state.done), "")
         finish("failed", f"{failed}: {type(e).__name__}: {e}".splitlines()[0])
         raise
     if model is not None and command == "run" and writer.root:
