@@ -70,6 +70,26 @@ def _init_petsc(argv, scene):
     return PETSc
 
 
+# the option prefixes of sealts' solvers (sealts.problem.Problem's ``prefix``)
+SOLVER_PREFIXES = ("", "static_", "hold_", "stroke_", "stroke_film_", "stroke_start_")
+
+
+def _check_petsc_options(PETSc):
+    """Read the given options once through a TS (and its SNES, KSP, PC) per solver prefix,
+    before the output directory is touched: an invalid value stops the run here, with the
+    last run's results still in place."""
+    opts = PETSc.Options()
+    if opts.hasName("help"):
+        return
+    for prefix in SOLVER_PREFIXES:
+        ts = PETSc.TS().create(comm=PETSc.COMM_SELF)
+        try:
+            ts.setOptionsPrefix(prefix)
+            ts.setFromOptions()
+        finally:
+            ts.destroy()
+
+
 def run(args, command="run"):
     scene_path, outdir, petsc_args = _split_run_args(args)
     if command == "ihl" and scene_path is None:
@@ -85,6 +105,7 @@ def run(args, command="run"):
     if command == "ihl" and scene.rod.velocity == 0.0:
         raise SceneError("ihl needs the stroke speed: set rod.velocity (mm/s)")
     options = PETSc.Options().getAll()
+    _check_petsc_options(PETSc)
     from .io import Writer
     from .steps import run_scene
     writer = Writer(out, comm, plots=scene.output.plot)

@@ -114,6 +114,19 @@ def test_bad_petsc_option_value_is_one_line_exit_4(tmp_path, option, value, name
     assert named in lines[0]
 
 
+def test_bad_petsc_option_leaves_the_last_results_in_place(tmp_path):
+    """The options are read through every solver prefix before the output directory is
+    touched: a bad value of a later step's option (the stroke's) stops the run before it
+    clears the last run's files."""
+    assert sealts("run", str(CONFIGS / "slider.toml"), "-o", str(tmp_path)).returncode == 0
+    before = (tmp_path / "summary.json").read_text()
+    r = sealts("run", str(CONFIGS / "slider.toml"), "-o", str(tmp_path),
+               "-stroke_ts_adapt_type", "foo")
+    assert r.returncode == 4 and 'Unknown TSAdapt type "foo"' in r.stderr
+    assert (tmp_path / "summary.json").read_text() == before
+    assert (tmp_path / "series.csv").stat().st_size > 0
+
+
 def test_help_shows_petsc_help(tmp_path):
     r = sealts("run", "-o", str(tmp_path), "-help")
     assert r.returncode == 0, r.stderr
