@@ -28,3 +28,7 @@ Scaling of the discrete system, so that PETSc tolerances mean something:
 Film thickness is printed in micrometres (um) in progress output and plots, because that is
 what a seal engineer reads; files keep mm so that every column shares one unit system.
 """
+
+# Pressures are gauge pressures (above the atmosphere's); the lowest a fluid can have is
+# vacuum, one atmosphere below it
+P_VACUUM = -0.101325      # MPa

@@ -42,8 +42,8 @@ class Gap:
 @dataclass(frozen=True)
 class Fluid:
     viscosity: float = option(1e-8, unit="MPa s", gt=0.0, doc="dynamic viscosity eta")
-    p_in: float = option(0.0, unit="MPa", doc="pressure at y = 0 (sealed, pressurised side)")
-    p_out: float = option(0.0, unit="MPa", doc="pressure at y = l (atmosphere side)")
+    p_in: float = option(0.0, unit="MPa", doc="gauge pressure at y = 0 (sealed, pressurised side)")
+    p_out: float = option(0.0, unit="MPa", doc="gauge pressure at y = l (atmosphere side)")
     p_crit: float = option(0.1, unit="MPa", ge=0.0,
                            doc="model = seal: pressure penetration stops where the seal "
                                "presses on a wall by more than the fluid pressure + p_crit")
@@ -436,6 +436,11 @@ def _check_consistency(s, base):
                              "'mooney-rivlin'")
         _check_viscoelastic(s)
         _check_stroke(s, base)
+        from ..units import P_VACUUM
+        for key, p in (("fluid.p_in", s.fluid.p_in), ("hold.p_end", s.hold.p_end)):
+            if p < P_VACUUM:
+                raise SceneError(f"{key} = {p:g} MPa is below vacuum ({P_VACUUM:g} MPa): "
+                                 "pressures are gauge pressures, above the atmosphere's")
         if s.fluid.p_out != 0.0:
             raise SceneError(f"fluid.p_out = {s.fluid.p_out:g} MPa: a seal scene's "
                              "atmosphere side is at 0 MPa (its free surface is not loaded "
