@@ -21,6 +21,7 @@ def sealts(*args, cwd=None):
     ("[film]\nalpha = 1.5", "film.alpha must be <= 1 (got 1.5)"),
     ("[film]\nelements = 10.5", "film.elements must be an integer (got 10.5)"),
     ("[film]\nscheme = 'fem'", "film.scheme must be one of 'fv', 'paper' (got 'fem')"),
+    ("[film]\nelements = 2000000000", "film.elements = 2,000,000,000: more than 10,000,000"),
     ("[asperity]\nh_mix = 0.0", "asperity.h_mix must be > 0 mm (got 0)"),
     ("[gap]\nh_min = 0.001\nsqueeze_velocity = -0.01\n[analysis]\ntype = 'transient'\n"
      "t_end = 1.0", "gap.squeeze_velocity = -0.01 mm/s closes the gap"),
@@ -157,6 +158,8 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[start]\nstate = 'nope.h5'\n", "start.state: no such file"),
     ("[fluid]\np_crit = -0.1\n", "fluid.p_crit must be >= 0 MPa"),
     ("[fluid]\np_in = -1.0\n", "fluid.p_in = -1 MPa is below vacuum (-0.101325 MPa)"),
+    ("[mesh]\nh_contact = 1e-4\n", "mesh.h_contact = 0.0001 mm: about 8.4e+07 mesh nodes"),
+    ("[mesh]\nh_bulk = 1e-3\nh_contact = 1e-3\n", "mesh.h_bulk = 0.001 mm: about 2.3e+07"),
     ("[viscoelastic]\nprony = 'table2'\n[hold]\np_end = -0.2\n[fluid]\np_in = 1.0\n",
      "hold.p_end = -0.2 MPa is below vacuum"),
     ("[fluid]\np_in = 0.5\np_out = 0.5\n", "fluid.p_out = 0.5 MPa: a seal scene's atmosphere"),
