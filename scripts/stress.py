@@ -19,7 +19,6 @@ rectangular ring, planar, a 15 h hold, flow factors, three meshes); add a factor
 entry of FACTORS.
 """
 import argparse
-import copy
 import csv
 import json
 import math
@@ -27,11 +26,10 @@ import os
 import subprocess
 import sys
 import time
-import tomllib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-BASE = ROOT / "configs" / "oring_stroke.toml"
+sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
 FACTORS = {
     "pressure": [(f"p_in {p:g} MPa", {"fluid": {"p_in": float(p)}})
@@ -46,33 +44,15 @@ FACTORS = {
 }
 
 
-def toml_value(v):
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, str):
-        return json.dumps(v)
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(toml_value(x) for x in v) + "]"
-    return repr(v)
-
-
-def scene_text(table):
-    """TOML text of a scene table of scalars and one level of sections."""
-    lines = [f"{k} = {toml_value(v)}" for k, v in table.items() if not isinstance(v, dict)]
-    for sec, values in table.items():
-        if isinstance(values, dict):
-            lines += ["", f"[{sec}]"] + [f"{k} = {toml_value(v)}" for k, v in values.items()]
-    return "\n".join(lines) + "\n"
-
-
-def case_table(overrides, mesh):
-    table = copy.deepcopy(tomllib.loads(BASE.read_text()))
-    table.setdefault("mesh", {}).update({"h_contact": mesh[0], "h_bulk": mesh[1],
-                                         "cache": str(ROOT / "meshes")})
-    table.setdefault("output", {}).update({"plot": False, "progress": False})
+def case_text(overrides, mesh):
+    """The scene file of one case: configs/oring_stroke.toml with the mesh, quiet output and
+    the case's keys set (tests/conftest.config_text, which edits by key)."""
+    from conftest import config_text
+    sections = {"mesh": {"h_contact": mesh[0], "h_bulk": mesh[1], "cache": str(ROOT / "meshes")},
+                "output": {"plot": False, "progress": False}}
     for sec, values in overrides.items():
-        table.setdefault(sec, {}).update(values)
-    return table
+        sections.setdefault(sec, {}).update(values)
+    return config_text("oring_stroke", **sections)
 
 
 def series_stats(path):
@@ -93,7 +73,7 @@ def run_case(name, overrides, mesh, timeout, work):
     d = work / "".join(c if c.isalnum() else "_" for c in name)
     d.mkdir(parents=True, exist_ok=True)
     scene = d / "scene.toml"
-    scene.write_text(scene_text(case_table(overrides, mesh)))
+    scene.write_text(case_text(overrides, mesh))
     t0 = time.perf_counter()
     try:
         r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(d / "out")],
