@@ -9,11 +9,14 @@ Also ``python -m sealts``. Subcommands:
   check  validate a scene file and print nothing else
   keys   list every scene key with its unit, range and default
 
-Exit codes: 0 success, 2 bad input (scene, files, usage), 3 a solve that failed.
+Exit codes: 0 success, 2 bad input (scene, files, usage), 3 a solve that failed, 4 a PETSc
+error (a bad option value), 130 / 143 stopped by SIGINT / SIGTERM (the files written so far
+are closed and readable, summary.json says "interrupted" and where).
 """
 import sys
 from pathlib import Path
 
+from . import interrupt
 from .scene import SceneError, default_scene, load_scene
 
 USAGE = """usage: sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]
@@ -108,7 +111,11 @@ def run(args, command="run"):
     _check_petsc_options(PETSc)
     from .io import Writer
     from .steps import run_scene
-    writer = Writer(out, comm, plots=scene.output.plot)
+    # the files the scene reads stay, whatever an earlier run in ``out`` wrote
+    inputs = [f for f in (scene.start.state, scene.stroke.table, scene.film.table,
+                          scene.seal.mesh_file) if f]
+    writer = Writer(out, comm, plots=scene.output.plot, keep=inputs)
+    interrupt.install()
     try:
         summary = run_scene(scene, writer, comm, command, options)
     finally:
@@ -169,6 +176,11 @@ def main(argv=None):
     except SceneError as e:
         print(f"scene error: {e}", file=sys.stderr)
         return 2
+    except interrupt.Interrupted as e:
+        _quiet_petsc()
+        print(f"stopped: {e}; what was written so far is closed and readable "
+              "(summary.json: status \"interrupted\")", file=sys.stderr)
+        return interrupt.EXIT_CODES.get(e.signal, 130)
     except Exception as e:  # solver failures are reported, not dumped
         from .core import SolveError
         if isinstance(e, SolveError):

@@ -142,3 +142,41 @@ def test_double_dash_help_prints_the_usage_and_runs_nothing(tmp_path):
         assert r.returncode == 0, r.stderr
         assert r.stdout.startswith("usage: sealts run") and "-help" in r.stdout
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("sig, code", [("SIGINT", 130), ("SIGTERM", 143)])
+def test_a_signal_ends_the_run_cleanly(tmp_path, sig, code):
+    """SIGINT or SIGTERM in the middle of a transient run: one line, exit 128 + signal, the
+    series flushed and closed (CSV and HDF5 agree row for row), summary.json written with
+    status "interrupted", the step and the last accepted time."""
+    import signal
+    import time
+    scene = tmp_path / "long.toml"
+    scene.write_text((CONFIGS / "slider.toml").read_text().replace("t_end = 0.5 ", "t_end = 0.9")
+                     .replace("output_times = [0.25]", "output_times = [0.45]"))
+    out = tmp_path / "out"
+    p = subprocess.Popen([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(out),
+                          "-ts_adapt_type", "none", "-ts_dt", "1e-6"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    series = out / "series.csv"
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < 120 and p.poll() is None:
+        if series.is_file() and series.read_text().count("\n") > 20:
+            break
+        time.sleep(0.2)
+    assert p.poll() is None, p.communicate()
+    p.send_signal(getattr(signal, sig))
+    stdout, stderr = p.communicate(timeout=60)
+    assert p.returncode == code, (stdout, stderr)
+    lines = stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"stopped: interrupted by {sig}"), stderr
+    res = Results(out)
+    summary = res.summary
+    assert summary["status"] == "interrupted"
+    assert summary["error"] == f"transient film: interrupted by {sig}"
+    rows = res.series
+    assert summary["t_reached"] == pytest.approx(rows["t"][-1])
+    assert 0.0 < rows["t"][-1] < 0.9
+    h5 = read_series(out / "series.h5")
+    assert list(h5) == list(rows) and len(h5["t"]) == len(rows["t"])
+    assert np.allclose(h5["t"], rows["t"], rtol=1e-9)

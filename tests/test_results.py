@@ -297,3 +297,31 @@ def test_ihl_flow_over_a_sine_cycle_against_its_integral():
     # a piecewise-linear q is integrated exactly: a ramp to 2 over 1 s, then 2 for 2 s
     assert np.array_equal(metrics.cumulative_volume([0.0, 1.0, 3.0], [0.0, 2.0, 2.0]),
                           [0.0, 1.0, 5.0])
+
+
+def test_a_new_run_deletes_the_last_runs_files_and_keeps_its_inputs(tmp_path):
+    """The manifest lists every file a run writes; the next run in the same directory
+    deletes those (and the names of runs older than the manifest) before it writes, except
+    the files its scene reads: no directory holds a mix of two runs."""
+    import json
+    from sealts.io.writer import Writer
+    written_run(tmp_path)
+    manifest = json.loads((tmp_path / "manifest.json").read_text())["files"]
+    assert sorted(manifest) == sorted(["stroke_profiles.csv", "series.csv", "summary.json",
+                                      "series.h5"])
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(manifest + ["manifest.json"])
+    # an earlier run's extra file (in its manifest), a pre-manifest field file, a kept input,
+    # and a file of the user's that no run wrote
+    (tmp_path / "stroke_fields.h5").write_text("old")        # a legacy name
+    (tmp_path / "custom_output.csv").write_text("old")
+    (tmp_path / "state.h5").write_text("input")
+    (tmp_path / "notes.txt").write_text("mine")
+    (tmp_path / "manifest.json").write_text(json.dumps({"files": manifest +
+                                                        ["custom_output.csv", "../x"]}))
+    w = Writer(tmp_path, RootComm(), plots=False, keep=[tmp_path / "state.h5"])
+    left = sorted(p.name for p in tmp_path.iterdir())
+    assert left == ["manifest.json", "notes.txt", "state.h5"]
+    w.series({"t": 0.0, "V_out": 0.0})
+    w.close()
+    assert json.loads((tmp_path / "manifest.json").read_text())["files"] == ["series.csv",
+                                                                           "series.h5"]

@@ -14,6 +14,12 @@ OUTDIR/
   state.h5       seal scenes: the mounted (and pressurised) state, for [start] state of a
                  later scene
   series.png     transient runs: flows, leakage and time step over time
+  manifest.json  the files this run wrote (rewritten as each new one appears)
+
+A new run first deletes the files an earlier run's manifest lists (and, for directories of
+runs older than the manifest, the names above), except those the new scene reads (a state
+file in the same directory): a directory never holds a mix of two runs' files. Every file a
+run writes is named through ``path(name)``, which enters it in the manifest.
 
 Only rank 0 writes. Rows are flushed as they come.
 """
@@ -25,25 +31,57 @@ from pathlib import Path
 import numpy as np
 
 
+# what runs wrote before the manifest existed
+LEGACY = ("profiles.csv", "series.csv", "series.h5", "hold_profiles.csv", "stroke_profiles.csv",
+          "ihl_profile.csv", "summary.json", "state.h5", "fields.xdmf", "fields.h5",
+          "stroke_fields.xdmf", "stroke_fields.h5", "profiles.png", "hold_profiles.png",
+          "stroke_profiles.png", "ihl_profile.png", "series.png")
+MANIFEST = "manifest.json"
+
+
 class Writer:
-    def __init__(self, outdir, comm, plots=True):
+    def __init__(self, outdir, comm, plots=True, keep=()):
+        """``keep``: paths the run reads (a ``[start] state`` file), never deleted."""
         self.dir = Path(outdir)
         self.root = comm.getRank() == 0
         self.plots = plots
         self._files = {}
         self._profiles = {}
         self._series = []
+        self.written = []
         if self.root:
             self.dir.mkdir(parents=True, exist_ok=True)
-            # an earlier run's outputs would read as this run's (series.h5 is written
-            # only at the end)
-            for name in ("profiles.csv", "series.csv", "series.h5", "hold_profiles.csv",
-                         "stroke_profiles.csv", "ihl_profile.csv", "summary.json"):
-                (self.dir / name).unlink(missing_ok=True)
+            self._clear(keep)
+            self._save_manifest()
+
+    def _clear(self, keep):
+        """Delete an earlier run's files (its manifest's, else the legacy names)."""
+        try:
+            old = json.loads((self.dir / MANIFEST).read_text())["files"]
+            old = [n for n in old if isinstance(n, str) and Path(n).name == n]
+        except (OSError, ValueError, KeyError, TypeError):
+            old = []
+        keep = {Path(k).resolve() for k in keep}
+        for name in set(old) | set(LEGACY):
+            f = self.dir / name
+            if f.resolve() not in keep:
+                f.unlink(missing_ok=True)
+
+    def _save_manifest(self):
+        tmp = self.dir / (MANIFEST + ".tmp")
+        tmp.write_text(json.dumps({"files": self.written}, indent=1) + "\n")
+        os.replace(tmp, self.dir / MANIFEST)
+
+    def path(self, name):
+        """OUTDIR/name, entered in the manifest (rank 0)."""
+        if self.root and name not in self.written:
+            self.written.append(name)
+            self._save_manifest()
+        return self.dir / name
 
     def _csv(self, name, fields):
         if name not in self._files:
-            f = open(self.dir / name, "w", newline="")
+            f = open(self.path(name), "w", newline="")
             w = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
             w.writeheader()
             self._files[name] = (f, w)
@@ -76,20 +114,22 @@ class Writer:
         if not self.root:
             return
         import h5py
+        target = self.path(name)
         tmp = self.dir / (name + ".tmp")
         with h5py.File(tmp, "w") as f:
             for k, v in arrays.items():
                 f.create_dataset(k, data=np.asarray(v))
             for k, v in attrs.items():
                 f.attrs[k] = v
-        os.replace(tmp, self.dir / name)
+        os.replace(tmp, target)
 
     def summary(self, data):
         if not self.root:
             return
+        target = self.path("summary.json")
         tmp = self.dir / "summary.json.tmp"
         tmp.write_text(json.dumps(data, indent=2) + "\n")
-        os.replace(tmp, self.dir / "summary.json")
+        os.replace(tmp, target)
 
     def close(self):
         if not self.root:
@@ -107,10 +147,10 @@ class Writer:
             for name, profiles in self._profiles.items():
                 labels = [lab for _, _, lab in profiles]
                 plot_profiles([(t, prof) for t, prof, _ in profiles],
-                              self.dir / name.replace(".csv", ".png"),
+                              self.path(name.replace(".csv", ".png")),
                               time_labels=labels if None not in labels else None)
             if self._series:
-                plot_series(self._series, self.dir / "series.png")
+                plot_series(self._series, self.path("series.png"))
 
 
 class NullWriter(Writer):
@@ -118,4 +158,4 @@ class NullWriter(Writer):
 
     def __init__(self):
         self.dir, self.root, self.plots = Path(os.devnull), False, False
-        self._files, self._profiles, self._series = {}, {}, []
+        self._files, self._profiles, self._series, self.written = {}, {}, [], []

@@ -41,6 +41,7 @@ written by its owner only; every other rank drops its terms' entries in it. The 
 import numpy as np
 from petsc4py import PETSc
 
+from .. import interrupt
 from ..core import Counters, SolveError, StepInfo
 
 
@@ -389,7 +390,12 @@ class Problem:
         self.t_steady = t
         snes = self.make_snes()
         X = self._owned(u0)
-        snes.solve(None, X)
+        try:
+            snes.solve(None, X)
+        except PETSc.Error:
+            interrupt.check()         # a signal that ended the solve from inside a callback
+            raise
+        interrupt.check(self.comm)
         reason = snes.getConvergedReason()
         self.counters.newton += snes.getIterationNumber()
         self.counters.linear += snes.getLinearSolveIterations()
@@ -424,12 +430,13 @@ class Problem:
                 return
             last[0] = t
             try:
+                interrupt.check(self.comm)   # between steps, before anything is written
                 u = self.gather(X).copy()
                 self.accepted(t, u)
                 info = StepInfo(step, ts.getTimeStep(), ts.getSNESIterations())
                 for obs in observers:
                     obs.accepted(t, u, info)
-            except SolveError as e:    # PETSc would turn it into "error 101"
+            except (SolveError, interrupt.Interrupted) as e:   # PETSc: "error 101"
                 raised.append(e)
                 raise
 
@@ -447,6 +454,7 @@ class Problem:
                 except PETSc.Error as e:
                     if raised:       # a hook's or observer's own verdict (one line) stands
                         raise raised[0] from None
+                    interrupt.check()
                     raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
                                      f"(PETSc error {e.ierr}); see the PETSc message above"
                                      ) from None

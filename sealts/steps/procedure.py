@@ -11,6 +11,7 @@ in this package, imported here and put in ``steps_for``.
 """
 import time
 
+from ..interrupt import Interrupted
 from ..io.fields import write_fields
 from ..io.progress import Progress
 from ..problem.seal_model import model_from_scene
@@ -98,6 +99,8 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
             body = {"scene": scene.name, "source": scene.source,
                     "analysis": " + ".join(state.done)}
         summary = {"status": status, **({"error": error} if error else {}), **body}
+        if status != "finished" and writer.root and writer._series:
+            summary["t_reached"] = writer._series[-1].get("t")   # the last accepted step
         summary["wall_time_s"] = time.perf_counter() - t_wall
         if writer.root:          # git runs once, on rank 0, which alone writes
             summary["provenance"] = provenance(scene, petsc_options or {})
@@ -107,14 +110,19 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
     steps = steps_for(scene, command)
     try:
         run_steps(steps, state)
-    except Exception as e:
-        # a failed run still says what it did: the steps done, their counts and parts,
-        # the step that failed and why ("status": "failed"); the series written so far stay
-        failed = next((st.name for st in steps if st.name and st.name not in state.done), "")
-        finish("failed", f"{failed}: {type(e).__name__}: {e}".splitlines()[0])
+    except (Exception, Interrupted) as e:
+        # a failed or interrupted run still says what it did: the steps done, their counts
+        # and parts, the step it stopped in and why ("status": "failed" or "interrupted");
+        # the series written so far stay
+        stopped = next((st.name for st in steps if st.name and st.name not in state.done), "")
+        if isinstance(e, Interrupted):
+            finish("interrupted", f"{stopped}: {e}")
+        else:
+            finish("failed", f"{stopped}: {type(e).__name__}: {e}".splitlines()[0])
         raise
     if model is not None and command == "run" and writer.root:
-        write_fields(str(writer.dir / "fields.xdmf"), model, state.u)
+        writer.path("fields.h5")
+        write_fields(str(writer.path("fields.xdmf")), model, state.u)
     return finish("finished")
 
 

@@ -97,7 +97,8 @@ class Stroke(Step):
                                         ("min h", "h_min", 1e3, "um")])
         series = Series(writer, [StrokeColumns(stroke), solver_columns, integrals], say, line)
         wanted = sorted(set(st.output_times) | {0.0, st.t_end})
-        fields = Fields(FieldSeries(writer.dir / "stroke_fields.xdmf", model.mesh.X,
+        writer.path("stroke_fields.h5")
+        fields = Fields(FieldSeries(writer.path("stroke_fields.xdmf"), model.mesh.X,
                                     model.mesh.conn, writer.root),
                         seal_fields(model, stroke), wanted)
         outputs = [series, Profiles(writer, stroke.profile, "stroke_profiles.csv", wanted),
