@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..film.floor import mean_gap_at_contact, roughness
 from ..film.flow_factor_tables import PATIR_CHENG_GAMMAS, read_table, tabulated_gamma
 from .errors import SceneError
 from .spec import build, option
@@ -73,8 +74,11 @@ class Film:
     table: str = option("", doc="CSV with columns h [mm], phi_p, phi_s (flow_factors = table)")
     rough_surface: str = option("seal", choices=("seal", "rod"),
                                 doc="which surface carries Rq: sign of the Phi_s term")
-    h_floor: float = option(1e-5, unit="mm", gt=0.0,
-                            doc="gap regularisation: the film conducts as if h >= h_floor")
+    h_floor: float = option(0.0, unit="mm", ge=0.0,
+                            doc="gap regularisation: the film conducts as if h >= h_floor; "
+                                "0: Rq / sqrt(2 pi), the mean gap of rough surfaces in "
+                                "contact, Rq from film.rq or the asperity law "
+                                "(0.086 um for the paper's O-ring; sealts.film.floor)")
 
 
 @dataclass(frozen=True)
@@ -555,6 +559,10 @@ def scene_from_table(table, source="<table>", base=None):
         return replace(section, **{key: str((base / name).resolve())})
 
     film, seal = resolved(scene.film, "table"), resolved(scene.seal, "mesh_file")
+    if film.h_floor == 0.0:
+        a = scene.asperity
+        film = replace(film, h_floor=mean_gap_at_contact(
+            roughness(film.rq, a.law, a.h_mix, a.summit_sigma)))
     stroke, start = resolved(scene.stroke, "table"), resolved(scene.start, "state")
     return replace(scene, petsc=petsc, source=source, film=film, seal=seal, stroke=stroke,
                    start=start)
