@@ -9,12 +9,12 @@ h = 0, ASME J. Lubr. Technol. 100, 1978) is
     h_T(0) = Rq / sqrt(2 pi) = 0.40 Rq,
 
 the scale below which the film's conductance cannot meaningfully fall. sealts uses it as the
-floor of the regularised gap (:mod:`sealts.film.gap`), with Rq taken from
-
-* ``film.rq`` when it is set (the flow factors' roughness);
-* else the asperity law: ``asperity.summit_sigma`` for Greenwood-Williamson, and for the
-  exponential law of Eq. 44 the paper's ratio of its two roughness parameters,
-  Rq = h_mix (0.215 / 0.7) (Table 3: h_mix = 0.7 um, Rq = 0.215 um).
+floor of the regularised gap (:mod:`sealts.film.gap`), with the Rq of the asperity law, the
+roughness that decides where the surfaces touch: ``asperity.summit_sigma`` for
+Greenwood-Williamson, and for the exponential law of Eq. 44 the paper's ratio of its two
+roughness parameters, Rq = h_mix (0.215 / 0.7) (Table 3: h_mix = 0.7 um, Rq = 0.215 um).
+(``film.rq``, the flow factors' roughness, is not used: Phi_p already carries it, and a
+floor from it would move with every flow-factor study.)
 
 For the paper's O-ring the floor is 0.086 um. A floor far below the roughness (a fixed
 0.01 um until this default) leaves the contact's hydraulic resistance flat over a zone the
@@ -27,10 +27,8 @@ import math
 RQ_PER_H_MIX = 2.15e-4 / 7e-4
 
 
-def roughness(rq, law, h_mix, summit_sigma):
-    """Composite Rq (mm) for the floor: ``rq`` if > 0, else from the asperity law."""
-    if rq > 0.0:
-        return rq
+def roughness(law, h_mix, summit_sigma):
+    """Composite Rq (mm) of the asperity law (``asperity.law`` and its parameters)."""
     return summit_sigma if law == "greenwood-williamson" else h_mix * RQ_PER_H_MIX
 
 

@@ -77,7 +77,7 @@ class Film:
     h_floor: float = option(0.0, unit="mm", ge=0.0,
                             doc="gap regularisation: the film conducts as if h >= h_floor; "
                                 "0: Rq / sqrt(2 pi), the mean gap of rough surfaces in "
-                                "contact, Rq from film.rq or the asperity law "
+                                "contact, Rq of the asperity law "
                                 "(0.086 um for the paper's O-ring; sealts.film.floor)")
 
 
@@ -562,7 +562,7 @@ def scene_from_table(table, source="<table>", base=None):
     if film.h_floor == 0.0:
         a = scene.asperity
         film = replace(film, h_floor=mean_gap_at_contact(
-            roughness(film.rq, a.law, a.h_mix, a.summit_sigma)))
+            roughness(a.law, a.h_mix, a.summit_sigma)))
     stroke, start = resolved(scene.stroke, "table"), resolved(scene.start, "state")
     return replace(scene, petsc=petsc, source=source, film=film, seal=seal, stroke=stroke,
                    start=start)
