@@ -9,8 +9,8 @@ Also ``python -m sealts``. Subcommands:
   check  validate a scene file and print nothing else
   keys   list every scene key with its unit, range and default
 
-Exit codes: 0 success, 2 bad input (scene, files, usage), 3 a solve that failed, 4 a PETSc
-error (a bad option value), 130 / 143 stopped by SIGINT / SIGTERM (the files written so far
+Exit codes: 0 success, 2 bad input (scene, files, usage, PETSc option names and values),
+3 a solve that failed, 130 / 143 stopped by SIGINT / SIGTERM (the files written so far
 are closed and readable, summary.json says "interrupted" and where).
 """
 import sys
@@ -77,10 +77,19 @@ def _init_petsc(argv, scene):
 SOLVER_PREFIXES = ("", "static_", "hold_", "stroke_", "stroke_film_", "stroke_start_")
 
 
-def _check_petsc_options(PETSc):
-    """Read the given options once through a TS (and its SNES, KSP, PC) per solver prefix,
-    before the output directory is touched: an invalid value stops the run here, with the
-    last run's results still in place."""
+# the solver objects whose options sealts' solvers read when they are set up
+FAMILIES = ("ts", "snes", "ksp", "pc")
+# ... and options of theirs read only while solving (viewers, reports, checks) or by
+# sub-solvers the check does not build
+READ_LATER = ("_view", "converged_reason", "_test_", "fieldsplit", "_sub_", "redundant_")
+
+
+def _check_petsc_options(PETSc, given=()):
+    """Read the given options once through a TS (BDF, Newton, LU as sealts sets them up) per
+    solver prefix, before the output directory is touched: an invalid value stops the run
+    here, with the last run's results still in place. Then every option in ``given`` that
+    names a sealts solver's TS, SNES, KSP or PC option (``-ts_...``, ``-stroke_snes_...``)
+    and was not read is a misspelt name: a SceneError names it."""
     opts = PETSc.Options()
     if opts.hasName("help"):
         return
@@ -88,9 +97,33 @@ def _check_petsc_options(PETSc):
         ts = PETSc.TS().create(comm=PETSc.COMM_SELF)
         try:
             ts.setOptionsPrefix(prefix)
+            ts.setType(PETSc.TS.Type.BDF)
+            snes = ts.getSNES()
+            snes.setType(PETSc.SNES.Type.NEWTONLS)
+            snes.getLineSearch()
+            ksp = snes.getKSP()
+            ksp.setType(PETSc.KSP.Type.PREONLY)
+            ksp.getPC().setType(PETSc.PC.Type.LU)
             ts.setFromOptions()
         finally:
             ts.destroy()
+    for name in given:
+        # read, or a deprecated name PETSc replaced by its new one (-ts_dt: -ts_time_step)
+        if opts.used(name) or not opts.hasName(name):
+            continue
+        if any(k in name for k in READ_LATER) or name.startswith("sub_"):
+            continue
+        words = name.split("_")
+        at = next((i for i, w in enumerate(words) if w in FAMILIES), None)
+        if at is None:
+            continue
+        prefix = "_".join(words[:at]) + "_" if at else ""
+        if prefix not in SOLVER_PREFIXES:
+            raise SceneError(f"unknown PETSc option -{name}: no sealts solver has the prefix "
+                             f"{prefix!r} (" + ", ".join(repr(p) for p in SOLVER_PREFIXES
+                                                         if p) + ")")
+        raise SceneError(f"unknown PETSc option -{name}: no sealts solver reads it "
+                         "(sealts run SCENE -help lists the options)")
 
 
 def run(args, command="run"):
@@ -108,7 +141,7 @@ def run(args, command="run"):
     if command == "ihl" and scene.rod.velocity == 0.0:
         raise SceneError("ihl needs the stroke speed: set rod.velocity (mm/s)")
     options = PETSc.Options().getAll()
-    _check_petsc_options(PETSc)
+    _check_petsc_options(PETSc, given=options)
     from .io import Writer
     from .steps import run_scene
     # the files the scene reads stay, whatever an earlier run in ``out`` wrote
@@ -190,7 +223,7 @@ def main(argv=None):
         if type(e).__module__.startswith("petsc4py"):   # a bad option value, mostly
             _quiet_petsc()
             print(f"PETSc error: {petsc_message(e)}", file=sys.stderr)
-            return 4
+            return 2
         raise
 
 
