@@ -14,9 +14,11 @@ table as Markdown with the machine's load. Usage:
 Factors (``--list`` prints the cases): ``pressure`` p_in 0, 1, 5, 10, 20, 30, 40 MPa;
 ``speed`` amplitudes 1, 100, 2000 mm/s; ``rough`` h_mix a tenth (a smoother rod) and
 ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction;
-``rtol`` 1e-2 and 1e-4. Issue 16 asks for more (velocity tables, back pressure, the
-rectangular ring, planar, a 15 h hold, flow factors, three meshes); add a factor as one
-entry of FACTORS.
+``rtol`` 1e-2 and 1e-4; ``velocity`` constant, ramp-hold and an abrupt start-stop-reverse
+table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
+flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2. Not yet:
+back pressure (not modelled), a 15 h hold, the full pressure x clearance x amplitude grid.
+Add a factor as one entry of FACTORS.
 """
 import argparse
 import csv
@@ -31,6 +33,18 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 
+# configs/rect_ring_mount.toml's ring (Mooney-Rivlin, 10 % squeeze, rounded groove corners),
+# at room temperature
+RECT_RING = {
+    "seal": {"shape": "rectangle", "inner_diameter": 50.1, "height": 2.4, "width": 2.0},
+    "rod": {"radius": 25.0},
+    "groove": {"diameter": 54.3, "width": 2.6, "corner_radius": 0.2},
+    "material": {"model": "mooney-rivlin", "c10": 0.8512, "c01": 0.2128, "d1": 0.001}}
+
+# the "abrupt" velocity table (t s, v mm/s): out at 500 mm/s within 10 ms, stop, back
+VELOCITY_TABLE = ("t,v\n0,0\n0.01,500\n2.49,500\n2.5,0\n3.0,0\n3.01,-500\n5.49,-500\n"
+                  "5.5,0\n6.0,0\n")
+
 FACTORS = {
     "pressure": [(f"p_in {p:g} MPa", {"fluid": {"p_in": float(p)}})
                  for p in (0, 1, 5, 10, 20, 30, 40)],
@@ -41,6 +55,21 @@ FACTORS = {
                  ("mu 0.5", {"asperity": {"mu_s": 0.5}, "groove": {"mu": 0.5}}),
                  ("no friction", {"stroke": {"friction": False}})],
     "rtol": [("rtol 1e-2", {"stroke": {"rtol": 1e-2}}), ("rtol 1e-4", {"stroke": {"rtol": 1e-4}})],
+    "velocity": [("constant 100 mm/s", {"stroke": {"velocity": "constant", "v_max": 100.0}}),
+                 ("ramp-hold 500 mm/s", {"stroke": {"velocity": "ramp-hold", "t_ramp": 1.0,
+                                                    "t_end": 5.0, "output_times": [2.5]}}),
+                 ("abrupt start-stop-reverse table", {"stroke": {
+                     "velocity": "table", "table": "velocity.csv", "t_end": 6.0,
+                     "output_times": [1.0, 4.0]}})],
+    "geometry": [("planar O-ring", {"seal": {"symmetry": "planar"}}),
+                 ("rectangular MR ring", {"seal": RECT_RING["seal"], "rod": RECT_RING["rod"],
+                                          "groove": RECT_RING["groove"],
+                                          "material": RECT_RING["material"]})],
+    "flow": [(f"Patir-Cheng Rq {rq * 1e3:g} um", {"film": {"flow_factors": "patir-cheng",
+                                                           "rq": rq}})
+             for rq in (2e-5, 2.15e-4, 2e-3)],
+    "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
+             ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
 }
 
 
@@ -74,6 +103,7 @@ def run_case(name, overrides, mesh, timeout, work):
     d.mkdir(parents=True, exist_ok=True)
     scene = d / "scene.toml"
     scene.write_text(case_text(overrides, mesh))
+    (d / "velocity.csv").write_text(VELOCITY_TABLE)
     t0 = time.perf_counter()
     try:
         r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(d / "out")],
