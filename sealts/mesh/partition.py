@@ -189,6 +189,25 @@ class Numbering:
         if self.identity and not np.array_equal(self.serial, np.arange(self.n)):
             raise RuntimeError("one rank's numbering is not the serial one")
 
+    def describe(self, dof):
+        """A serial dof in words: "radial displacement of node 83", "film pressure at node
+        12", "V_out"."""
+        for name, i in self.scalar_dofs.items():
+            if dof == i:
+                return name
+        hit = np.argwhere(self.udofs == dof)
+        if hit.size:
+            node, c = hit[0]
+            return f"{('radial', 'axial')[c]} displacement of node {node}"
+        for name, arr in (("film pressure", self.film_dofs), ("rod slip", self.slip_dofs)):
+            hit = np.argwhere(np.asarray(arr) == dof)
+            if hit.size:
+                return f"{name} at rod-side node {int(self.rod_nodes[hit[0][0]])}"
+        hit = np.argwhere(self.prony_dofs == dof)
+        if hit.size:
+            return f"Prony variable of cell {hit[0][0]}"
+        return f"unknown {dof}"
+
     def field_dofs(self, name):
         """All serial dofs of one field, sorted."""
         arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,

@@ -109,6 +109,7 @@ class Problem:
         # correction is below c times TS's error tolerance of every unknown (None: off)
         self.update_test = None
 
+        self.dofs = dofs
         if dofs is None:      # replicated: every rank has every dof, adds its own rows
             self.U = PETSc.Vec().createMPI((PETSc.DECIDE, self.n), comm=self.comm)
             self.rstart, self.rend = self.U.getOwnershipRange()
@@ -409,6 +410,31 @@ class Problem:
         snes.destroy()
         return u
 
+    def _option_real(self, name, default):
+        """A real option as in force for this problem's prefix (the command line's, else
+        ``default``)."""
+        opts = PETSc.Options(self.prefix or None)
+        return opts.getReal(name, default) if opts.hasName(name) else default
+
+    def _check_min_step(self, t_prev, t, u, rtol, atol):
+        """TSAdapt accepts a step at its minimum size whatever its error (PETSc's basic
+        controller): such a step is not an answer but a sign that the solution changes
+        faster than any step can follow. Stop, and name the unknown that changed most
+        against its tolerance."""
+        if self._dt_min is None or t - t_prev > self._dt_min * (1.0 + 1e-6):
+            return
+        u_prev = self._last_u[0]
+        name = ""
+        if u_prev is not None:
+            scale = np.asarray(atol, float) + np.asarray(rtol, float) * np.abs(u)
+            change = np.abs(u - u_prev) / np.where(scale > 0, scale, np.inf)
+            i = int(np.argmax(change))
+            what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
+            name = f"; the fastest change: {what}"
+        raise SolveError(f"time step at its minimum ({self._dt_min:.3g} s) at t = {t:.6g} s: "
+                         "the solution changes faster than the error tolerance can follow "
+                         f"(a step this small is accepted unchecked){name}")
+
     def transient(self, u0, t0, t_end, dt0, stops=(), observers=(), rtol=1e-6, atol=1e-8):
         """Integrate from t0 to t_end with adaptive steps; return the full final state.
 
@@ -420,18 +446,23 @@ class Problem:
         per unknown (full, serial order; a huge one leaves that unknown out of the local
         error estimate).
         """
-        last = [None]
+        last, last_u = [None], [None]
         raised = []
         observers = list(observers)
+        targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
+        self._dt_min = None
 
         def monitor(ts, step, t, X):
             # TS calls its monitor at the start of every solve(): report each state once
             if t == last[0]:
                 return
-            last[0] = t
+            t_prev, last[0] = last[0], t
             try:
                 interrupt.check(self.comm)   # between steps, before anything is written
                 u = self.gather(X).copy()
+                if t_prev is not None and t not in targets:
+                    self._check_min_step(t_prev, t, u, rtol, atol)
+                last_u[0] = u
                 self.accepted(t, u)
                 info = StepInfo(step, ts.getTimeStep(), ts.getSNESIterations())
                 for obs in observers:
@@ -441,8 +472,9 @@ class Problem:
                 raise
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
+        self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * max(float(t_end - t0), 1e-300))
+        self._last_u = last_u
         X = self._owned(u0)
-        targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
         try:
             u = np.array(u0, float)
             for obs in observers:

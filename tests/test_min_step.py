@@ -1,0 +1,41 @@
+"""A time step at TSAdapt's minimum is not an answer: PETSc's basic controller accepts such a
+step whatever its error, so Problem.transient stops there and names the unknown that moved
+most against its tolerance. A closed form that blows up in finite time shows it: u' = u^2,
+u(0) = 1, u = 1 / (1 - t), infinite at t = 1."""
+import numpy as np
+import pytest
+
+from sealts.core import Recorder, SolveError, Term
+from sealts.problem import Problem
+
+
+class BlowUp(Term):
+    """F = u' - u^2 on every unknown (independent copies)."""
+
+    def __init__(self, n):
+        self.rows = self.cols = np.arange(n)
+
+    def add_residual(self, t, u, udot, f):
+        f += udot - u * u
+
+    def jacobian_values(self, t, u, udot, shift):
+        return shift - 2.0 * u
+
+
+def test_the_closed_form_is_followed_up_to_the_blow_up():
+    p = Problem(2, [BlowUp(2)])
+    rec = Recorder()
+    u = p.transient(np.ones(2), 0.0, 0.9, 1e-4, observers=[rec], rtol=1e-7, atol=1e-9)
+    assert u == pytest.approx(1.0 / (1.0 - 0.9), rel=1e-3)
+
+
+def test_a_step_at_the_minimum_stops_the_run_and_names_the_unknown():
+    p = Problem(2, [BlowUp(2)])
+    u0 = np.array([1.0, 0.5])              # the first unknown blows up first (t = 1)
+    with pytest.raises(SolveError) as e:
+        p.transient(u0, 0.0, 2.0, 1e-4, rtol=1e-6, atol=1e-9)
+    msg = str(e.value)
+    assert "time step at its minimum (2e-12 s)" in msg
+    assert "the fastest change: unknown 0" in msg
+    t = float(msg.split("at t = ")[1].split(" s")[0])
+    assert 0.999 < t <= 1.0
