@@ -44,6 +44,16 @@ after the Section's fields.
   ``rod_slip`` field, integrated by TS. ``friction_groove`` in the series is the walls'
   axial friction force on the seal.
 
+* viscous stabilisation (``stroke.stabilisation``, c in MPa s/mm^2):
+  :class:`sealts.solid.stabilisation.ViscousStabilisation`, F += c V_i u_i' on every
+  node's displacement rows (V_i its lumped volume), each rank over the nodes it owns. The
+  quasi-static seal has no rate term of its own: where its equilibrium path folds (the
+  O-ring's outlet flank peeling off the rod, a stick-slide snap at 10 MPa), the DAE's
+  solution runs away in finite time and no step is small enough. The stabilisation gives
+  the snap a finite speed; away from snaps its force is negligible (its largest share of
+  the normal load over the run is reported as ``stabilisation_share``;
+  benchmarks/stress.md has the answers' independence of c).
+
 * error control: the local error in the max norm over the unknowns (``Problem.ts_defaults``,
   docs/design.md); each unknown's tolerance in its own unit, the leakage volumes' absolute
   (``StrokeProblem.tolerances``).
@@ -71,6 +81,7 @@ from ..core import Constraints
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
 from ..solid.pressure import PressureLoad
+from ..solid.stabilisation import ViscousStabilisation
 from ..solid.term import SolidTerm
 from ..solid.viscoelastic_solid import ViscoelasticSolid
 from .film_model import flow_factors_of
@@ -169,6 +180,14 @@ class StrokeProblem:
             on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges], bool)
             self.load.s0 = np.where(on_rod, 0.0, old.s0)
             self.load.s1 = np.where(on_rod, 0.0, old.s1)
+        # the viscous stabilisation, over this rank's own nodes (lumped volumes)
+        self.stab = None
+        c = scene.stroke.stabilisation
+        self.node_volume = model.stab.m.reshape(-1, 2)[:, 0]
+        if c > 0.0:
+            own = model.partition.owned_nodes
+            self.stab = ViscousStabilisation(lay.udofs_local[own].ravel(),
+                                             np.repeat(self.node_volume[own], 2), c)
         self.U0 = np.zeros(self.n)
         self.U0[ud] = u0[model.udofs]
         fields = None
@@ -207,7 +226,8 @@ class StrokeProblem:
                                 self.leakage if with_leakage else None, self.friction,
                                 self.groove_friction, self.load,
                                 self.work if with_leakage else None) if t is not None]
-        return ([self.guard, solid] + ([prony] if prony is not None else [])
+        stab = [self.stab] if (self.stab is not None and with_leakage) else []
+        return ([self.guard, solid] + stab + ([prony] if prony is not None else [])
                 + self.layout.on_root(boundary))
 
     def start(self):
@@ -317,13 +337,17 @@ class StrokeProblem:
         gf = self.groove_friction
         groove = gf.axial(t, U) if gf is not None else 0.0
         work = float(U[self.work.wd]) if self.work is not None else 0.0
+        f_stab = 0.0
+        if self.stab is not None and Udot is not None:
+            ud = self.layout.udofs
+            f_stab = float(np.abs(self.stab.c * self.node_volume[:, None] * Udot[ud]).sum())
         return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
                 "friction_total": shear + solid, "friction_groove": groove,
                 "normal_load": load_fluid + load_asperity, "load_fluid": load_fluid,
                 "load_asperity": load_asperity, "Q_in": q_in, "Q_out": q_out,
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
                 "asperity_contact_length": length, "p_fluid_max": p_max,
-                "W_friction": work}
+                "W_friction": work, "F_stabilisation": f_stab}
 
     @property
     def volume_scale(self):

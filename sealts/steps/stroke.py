@@ -120,6 +120,10 @@ class Stroke(Step):
             "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
             "friction_work": rows[-1]["W_friction"],
             "h_min": float(min(r["h_min"] for r in rows)),
+            # the stabilisation's largest force (sum of |c V_i u_i'|) against the normal load
+            "stabilisation_share": float(max(r["F_stabilisation"] / max(abs(r["normal_load"]),
+                                                                          1e-300)
+                                             for r in rows)),
             "steps_accepted": c.steps, "steps_rejected": c.rejected,
             "newton_iterations": c.newton, "linear_iterations": c.linear,
             "wall_time_s": time.perf_counter() - t_wall,
