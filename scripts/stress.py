@@ -16,7 +16,8 @@ Factors (``--list`` prints the cases): ``pressure`` p_in 0, 1, 5, 10, 20, 30, 40
 ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction;
 ``rtol`` 1e-2 and 1e-4; ``velocity`` constant, ramp-hold and an abrupt start-stop-reverse
 table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
-flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2. Not yet:
+flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
+``stabilisation`` 10 and 40 MPa and the smooth rod with stroke.stabilisation = 1e-3. Not yet:
 back pressure (not modelled), a 15 h hold, the full pressure x clearance x amplitude grid.
 Add a factor as one entry of FACTORS.
 """
@@ -68,6 +69,10 @@ FACTORS = {
     "flow": [(f"Patir-Cheng Rq {rq * 1e3:g} um", {"film": {"flow_factors": "patir-cheng",
                                                            "rq": rq}})
              for rq in (2e-5, 2.15e-4, 2e-3)],
+    "stabilisation": [(f"{name} + stabilisation 1e-3", {**over, "stroke": {"stabilisation": 1e-3}})
+                      for name, over in (("p_in 10 MPa", {"fluid": {"p_in": 10.0}}),
+                                         ("p_in 40 MPa", {"fluid": {"p_in": 40.0}}),
+                                         ("h_mix 7e-5 mm", {"asperity": {"h_mix": 7e-5}}))],
     "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
              ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
 }

@@ -108,6 +108,9 @@ class Problem:
         # c of sealts.problem.newton_test: a stage's Newton solve also converges once its
         # correction is below c times TS's error tolerance of every unknown (None: off)
         self.update_test = None
+        # stop at a step of TS's minimum size (``_check_min_step``); a problem whose fastest
+        # physics needs steps that small (a Prony term of 1e-8 s over 1e4 s) leaves it off
+        self.stop_at_min_step = False
 
         self.dofs = dofs
         if dofs is None:      # replicated: every rank has every dof, adds its own rows
@@ -421,7 +424,13 @@ class Problem:
         controller): such a step is not an answer but a sign that the solution changes
         faster than any step can follow. Stop, and name the unknown that changed most
         against its tolerance."""
-        if self._dt_min is None or t - t_prev > self._dt_min * (1.0 + 1e-6):
+        if not self.stop_at_min_step or self._dt_min is None:
+            return
+        dt, at_min = t - t_prev, self._dt_min * (1.0 + 1e-6)
+        last_dt, self._last_dt = self._last_dt, dt
+        # a first step the caller chose below the minimum grows away from it: only a step
+        # at the minimum that follows one there, and is no longer, is the controller stuck
+        if dt > at_min or last_dt is None or last_dt > at_min or dt > last_dt * (1.0 + 1e-6):
             return
         u_prev = self._last_u[0]
         name = ""
@@ -473,7 +482,7 @@ class Problem:
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
         self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * max(float(t_end - t0), 1e-300))
-        self._last_u = last_u
+        self._last_u, self._last_dt = last_u, None
         X = self._owned(u0)
         try:
             u = np.array(u0, float)

@@ -227,10 +227,11 @@ class Stroke:
     friction_exponent: float = option(4.0, ge=2.0,
                                       doc="friction_history = state: the Bouc-Wen exponent n "
                                           "(the knee between stick and slide sharpens with n)")
-    stabilisation: float = option(1e-3, unit="MPa s/mm^2", ge=0.0,
+    stabilisation: float = option(0.0, unit="MPa s/mm^2", ge=0.0,
                                   doc="viscous force c V_i u_i' on the seal's nodes (0: none): "
                                       "gives a snap of the quasi-static seal (a fold of its "
-                                      "equilibrium path) a finite speed; its largest share of "
+                                      "equilibrium path) a finite speed; 1e-3 carries the "
+                                      "10 MPa O-ring through its snap; its largest share of "
                                       "the normal load is the summary's stabilisation_share")
 
 
