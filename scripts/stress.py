@@ -122,7 +122,7 @@ def run_case(name, overrides, mesh, timeout, work):
     s = json.loads(summ.read_text()) if summ.exists() else {}
     st = s.get("stroke", {})
     if rc != 0:
-        row["why"] = s.get("error", err[0])[:160]
+        row["why"] = s.get("error", err[0])[:320]
     row.update({"accepted": st.get("steps_accepted", ""), "rejected": st.get("steps_rejected", ""),
                 "Newton": st.get("newton_iterations", ""),
                 "net mm^3": st.get("leakage_out", ""),
