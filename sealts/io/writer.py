@@ -108,6 +108,11 @@ class Writer:
         w.writerow({k: (f"{v:.10g}" if isinstance(v, float) else v) for k, v in row.items()})
         f.flush()
 
+    @property
+    def last_row(self):
+        """The last series row written (None before the first)."""
+        return self._series[-1] if self._series else None
+
     def state(self, arrays, attrs, name="state.h5"):
         """An HDF5 file of named arrays and scalar attributes, written whole (a temporary
         file renamed into place, so a reader never sees half a state)."""

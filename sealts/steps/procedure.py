@@ -99,8 +99,8 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
             body = {"scene": scene.name, "source": scene.source,
                     "analysis": " + ".join(state.done)}
         summary = {"status": status, **({"error": error} if error else {}), **body}
-        if status != "finished" and writer.root and writer._series:
-            summary["t_reached"] = writer._series[-1].get("t")   # the last accepted step
+        if status != "finished" and writer.root and writer.last_row is not None:
+            summary["t_reached"] = writer.last_row.get("t")     # the last accepted step
         summary["wall_time_s"] = time.perf_counter() - t_wall
         if writer.root:          # git runs once, on rank 0, which alone writes
             summary["provenance"] = provenance(scene, petsc_options or {})
