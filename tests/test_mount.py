@@ -307,6 +307,9 @@ def test_relaxed_front_damps_an_overshooting_front():
         def pressure(self, t):
             return 1.0
 
+        def check_blow_by(self, t):
+            pass
+
     plain = Overshooting()
     for _ in range(6):
         plain.set_reach(plain.target_reach(None, 1.0))

@@ -1,6 +1,6 @@
-"""The rod-side guard's stops (sealts.contact.rod_side_guard): a node off the rod side inside
-the rod, and the rod side folding over (the 40 MPa O-ring squeezed into the corner between
-rod and groove wall, benchmarks/stress.md)."""
+"""Physical stops: the rod-side guard (sealts.contact.rod_side_guard) for a node off the rod
+side inside the rod and for the rod side folding over (the 40 MPa O-ring squeezed into the
+corner between rod and groove wall, benchmarks/stress.md); blow-by (sealts.solid.pressure)."""
 import numpy as np
 import pytest
 
@@ -44,3 +44,26 @@ def test_a_node_off_the_rod_side_inside_the_rod_stops_the_run():
     with pytest.raises(SolveError) as e:
         RodSideGuard(side, depth=7e-4).accepted(0.25, u)
     assert "node 6 off the rod side is 1 um inside the rod" in str(e.value)
+
+
+def test_blow_by_is_a_stop_named_by_the_front(tmp_path):
+    """The pressure-penetration front that reaches the atmosphere side has passed the seal:
+    with no contact pressure anywhere, 1 MPa wets the whole boundary loop of the coarse
+    O-ring, and the front's post-step hook stops the run with "blow-by" and the pressure."""
+    from conftest import coarse_stroke
+    from sealts.solid.pressure import AdvancingFront
+    from sealts.steps import new_state
+    model = new_state(coarse_stroke(tmp_path)).model
+    load = model.pressure_load(lambda t: 1.0, 0.1)
+    assert load.exit.sum() > 0 and not load.exit[load.start]
+    none = np.zeros(model.mesh.X.shape[0])
+    hook = AdvancingFront(load, lambda t, u: none)
+    with pytest.raises(SolveError) as e:
+        hook.accepted(2.5, np.zeros(model.n))
+    assert str(e.value).startswith("blow-by: the pressure-penetration front reached the "
+                                   "atmosphere side")
+    assert "p = 1 MPa, t = 2.5" in str(e.value)
+    # the front stopped by the contact (every node pressed harder than p + p_crit) is no
+    # blow-by
+    load = model.pressure_load(lambda t: 1.0, 0.1)
+    AdvancingFront(load, lambda t, u: none + 5.0).accepted(2.5, np.zeros(model.n))

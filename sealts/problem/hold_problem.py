@@ -43,6 +43,7 @@ class HoldProblem:
                                  model.axisym, load.edges[load.start, 0], udofs=lay.udofs,
                                  p_crit=load.p_crit)
         self.load.set_reach(load.reach)
+        self.load.mark_exit(mesh.edges["atmosphere_side"])
         # serial start vector; each rank fills the internal variables of its own cells
         self.U0 = np.zeros(lay.n)
         self.U0[lay.udofs] = u0[model.udofs]

@@ -170,8 +170,10 @@ class SealModel:
         from ..solid.pressure import PressureLoad
         chain_p = self.mesh.nodes("pressure_side")
         start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
-        return PressureLoad(self.mesh.X, self.mesh.conn, pressure, self.axisym, start,
+        load = PressureLoad(self.mesh.X, self.mesh.conn, pressure, self.axisym, start,
                             udofs=self.udofs, p_crit=p_crit)
+        load.mark_exit(self.mesh.edges["atmosphere_side"])
+        return load
 
     def pressure_resultant(self, load, t, u):
         """Total (radial, axial) force of the fluid pressure on the seal (N)."""

@@ -42,7 +42,7 @@ pressure (front update and static solve in turn, until it stops moving).
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
-from ..core import Term
+from ..core import SolveError, Term
 
 
 def boundary_loop(conn):
@@ -77,6 +77,25 @@ class PressureLoad(Term):
         self.dofs = np.concatenate([da, db], 1)            # (m, 4): ra, za, rb, zb
         self.rows = np.repeat(self.dofs, 4, axis=1).ravel()
         self.cols = np.tile(self.dofs, (1, 4)).ravel()
+
+    def mark_exit(self, edges):
+        """The boundary edges (node pairs) beyond the seal, on its atmosphere side: the fluid
+        reaching one of them has passed the seal (:meth:`check_blow_by`)."""
+        keys = {tuple(sorted(e)) for e in np.asarray(edges).reshape(-1, 2).tolist()}
+        self.exit = np.array([tuple(sorted(e)) in keys for e in self.edges.tolist()], bool)
+
+    def check_blow_by(self, t):
+        """SolveError if the wetted set reaches the atmosphere side: blow-by."""
+        exit_ = getattr(self, "exit", None)
+        if exit_ is None or not exit_.any():
+            return
+        wet = self.wet[exit_]
+        if wet.max() > 0.0:
+            k = int(np.nonzero(exit_)[0][np.argmax(wet)])
+            raise SolveError(f"blow-by: the pressure-penetration front reached the atmosphere "
+                             f"side (edge of nodes {self.edges[k, 0]}-{self.edges[k, 1]}) at "
+                             f"p = {self.pressure(t):.4g} MPa, t = {t:.6g}: the seal no longer "
+                             "seals")
 
     @property
     def wet(self):
@@ -231,6 +250,7 @@ class AdvancingFront(Term):
     def accepted(self, t, u):
         self.load.update(self.contact_pressure(t, u), self.load.pressure(t),
                          max_advance=self.max_advance, recede=False)
+        self.load.check_blow_by(t)
 
 
 class RelaxedFront(Term):
@@ -259,3 +279,4 @@ class RelaxedFront(Term):
                 self.direction[i] = d
             reach.append(now + min(self.omega[i] * (goal - now), self.max_advance))
         L.set_reach(reach)
+        L.check_blow_by(t)
