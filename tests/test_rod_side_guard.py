@@ -67,3 +67,29 @@ def test_blow_by_is_a_stop_named_by_the_front(tmp_path):
     # blow-by
     load = model.pressure_load(lambda t: 1.0, 0.1)
     AdvancingFront(load, lambda t, u: none + 5.0).accepted(2.5, np.zeros(model.n))
+
+
+def test_a_seal_clear_of_the_rod_blows_by(tmp_path):
+    """A scene that cannot seal: the O-ring held by a wider groove (60.5 mm) clears a 49 mm
+    rod, so nothing presses it against the rod. Pressurisation stops at once with the
+    physical cause (exit 3, one line), and summary.json says where."""
+    import subprocess
+    import sys
+
+    from conftest import ROOT, config_text
+    from sealts.io.results import Results
+    scene = tmp_path / "clear.toml"
+    scene.write_text(config_text(
+        "oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path / "m")},
+        rod={"radius": 24.5}, groove={"diameter": 60.5},
+        output={"plot": False, "progress": False}))
+    r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "-o",
+                        str(tmp_path / "out")], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 3, r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("solve error: blow-by: the pressure-"
+                                                   "penetration front reached the atmosphere")
+    summary = Results(tmp_path / "out").summary
+    assert summary["status"] == "failed"
+    assert summary["error"].startswith("pressurise: SolveError: blow-by")
+    assert summary["results"]["contact_force_total"] == 0.0      # the mount never touched
