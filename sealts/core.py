@@ -16,6 +16,11 @@ class SolveError(RuntimeError):
     state that left the model's range); its message is one line naming the cause."""
 
 
+class StepTooSmall(SolveError):
+    """TS's steps stuck at their minimum size: the solution runs away faster than any step
+    (:meth:`sealts.problem.Problem._check_min_step`)."""
+
+
 def of_time(x):
     """A term's parameter given as a number or as a function of t, as a function of t."""
     return x if callable(x) else (lambda t, x=float(x): x)

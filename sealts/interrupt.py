@@ -40,11 +40,6 @@ def install():
         signal.signal(sig, _handler)
 
 
-def pending():
-    """The name of a signal received and not yet acted on, or None."""
-    return _pending[0] if _pending else None
-
-
 def check(comm=None):
     """Raise :class:`Interrupted` if a signal came since :func:`install`; with a PETSc
     ``comm`` of several ranks, on every rank as soon as one has it (so all stop at the same

@@ -42,7 +42,7 @@ import numpy as np
 from petsc4py import PETSc
 
 from .. import interrupt
-from ..core import Counters, SolveError, StepInfo
+from ..core import Counters, SolveError, StepInfo, StepTooSmall
 
 
 # the solvers in force, by options prefix, as set up last in this process (for the summary)
@@ -440,7 +440,7 @@ class Problem:
             i = int(np.argmax(change))
             what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
             name = f"; the fastest change: {what}"
-        raise SolveError(f"time step at its minimum ({self._dt_min:.3g} s) at t = {t:.6g} s: "
+        raise StepTooSmall(f"time step at its minimum ({self._dt_min:.3g} s) at t = {t:.6g} s: "
                          "the solution changes faster than the error tolerance can follow "
                          f"(a step this small is accepted unchecked){name}")
 

@@ -79,7 +79,7 @@ from ..contact.groove_friction import GrooveFriction
 from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..contact.slip_state_friction import SlipStateFriction
-from ..core import Constraints, SolveError
+from ..core import Constraints, StepTooSmall
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
 from ..solid.pressure import PressureLoad
@@ -402,9 +402,9 @@ class StrokeProblem:
         try:
             return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops,
                                           observers=observers, rtol=rtol, atol=atol)
-        except SolveError as e:
-            if "time step at its minimum" in str(e) and self.stab is None:
-                raise SolveError(f"{e}; if the seal snaps there (a fold of its quasi-static "
-                                 "equilibrium), stroke.stabilisation = 1e-3 gives the snap "
-                                 "a finite speed") from None
+        except StepTooSmall as e:
+            if self.stab is None:
+                raise StepTooSmall(f"{e}; if the seal snaps there (a fold of its quasi-static "
+                                   "equilibrium), stroke.stabilisation = 1e-3 gives the snap "
+                                   "a finite speed") from None
             raise
