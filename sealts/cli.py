@@ -1,9 +1,12 @@
-"""Command line: ``sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]``.
+"""Command line: ``sealts run [SCENE.toml] [-o OUTDIR] [--restart OUTDIR] [PETSc options ...]``.
 
 Also ``python -m sealts``. Subcommands:
 
   run    run a scene (the embedded default scene without one); every option that sealts does
-         not know goes to PETSc (-ts_type, -snes_monitor, -pc_type, -log_view, -help, ...)
+         not know goes to PETSc (-ts_type, -snes_monitor, -pc_type, -log_view, -help, ...);
+         --restart OUTDIR goes on with the stroke of the run in OUTDIR (interrupted or
+         failed) from its last checkpoint (a stop of the stroke: output times, reversals),
+         with the same scene
   ihl    inverse-hydrodynamic estimate of a seal scene's film and leakage per stroke, from
          its dry mounted (and pressurised) contact pressure at rod.velocity
   check  validate a scene file and print nothing else
@@ -19,27 +22,33 @@ from pathlib import Path
 from . import interrupt
 from .scene import SceneError, default_scene, load_scene
 
-USAGE = """usage: sealts run [SCENE.toml] [-o OUTDIR] [PETSc options ...]
+USAGE = """usage: sealts run [SCENE.toml] [-o OUTDIR | --restart OUTDIR] [PETSc options ...]
        sealts ihl SCENE.toml [-o OUTDIR] [PETSc options ...]
        sealts check SCENE.toml
        sealts keys"""
 
 
 def _split_run_args(args):
-    """(scene, outdir, PETSc args). The scene is the first argument, or the one ending in
-    .toml wherever it stands; other tokens that are not options are values of the PETSc
-    option before them."""
-    scene, outdir, petsc = None, None, []
+    """(scene, outdir, restart dir, PETSc args). The scene is the first argument, or the one
+    ending in .toml wherever it stands; other tokens that are not options are values of the
+    PETSc option before them."""
+    scene, outdir, restart, petsc = None, None, None, []
     i = 0
     while i < len(args):
         a = args[i]
-        if a in ("-o", "--output"):
+        if a in ("-o", "--output", "--restart"):
             if i + 1 >= len(args) or args[i + 1].startswith("-"):
                 raise SceneError(f"{a} needs a directory")
-            outdir, i = args[i + 1], i + 2
+            if a == "--restart":
+                restart = args[i + 1]
+            else:
+                outdir = args[i + 1]
+            i += 2
             continue
         if a.startswith("--output="):
             outdir = a.split("=", 1)[1]
+        elif a.startswith("--restart="):
+            restart = a.split("=", 1)[1]
         elif (a.endswith(".toml") or i == 0) and not a.startswith("-"):
             if scene is not None:
                 raise SceneError(f"two scene files given: {scene} and {a}")
@@ -49,7 +58,11 @@ def _split_run_args(args):
         else:
             petsc.append(a)
         i += 1
-    return scene, outdir, petsc
+    if restart is not None and outdir is not None and Path(outdir).resolve() != Path(
+            restart).resolve():
+        raise SceneError(f"--restart {restart} continues the run in {restart}; -o {outdir} "
+                         "names another directory")
+    return scene, restart or outdir, restart, petsc
 
 
 def _prepare_outdir(out):
@@ -127,10 +140,15 @@ def _check_petsc_options(PETSc, given=()):
 
 
 def run(args, command="run"):
-    scene_path, outdir, petsc_args = _split_run_args(args)
-    if command == "ihl" and scene_path is None:
-        raise SceneError("ihl needs a seal scene file")
+    scene_path, outdir, restart, petsc_args = _split_run_args(args)
+    if command == "ihl" and (scene_path is None or restart):
+        raise SceneError("ihl needs a seal scene file" if scene_path is None
+                         else "ihl has no --restart")
     scene = load_scene(scene_path) if scene_path else default_scene()
+    resume = None
+    if restart is not None:
+        from .steps.stroke_checkpoint import check_restart
+        resume = check_restart(restart, scene)
     out = Path(outdir) if outdir else Path("results") / (
         scene.name + ("_ihl" if command == "ihl" else ""))
     _prepare_outdir(out)
@@ -147,10 +165,10 @@ def run(args, command="run"):
     # the files the scene reads stay, whatever an earlier run in ``out`` wrote
     inputs = [f for f in (scene.start.state, scene.stroke.table, scene.film.table,
                           scene.seal.mesh_file) if f]
-    writer = Writer(out, comm, plots=scene.output.plot, keep=inputs)
+    writer = Writer(out, comm, plots=scene.output.plot, keep=inputs, resume=resume is not None)
     interrupt.install()
     try:
-        summary = run_scene(scene, writer, comm, command, options)
+        summary = run_scene(scene, writer, comm, command, options, resume=resume)
     finally:
         writer.close()
     if command == "ihl":

@@ -39,10 +39,23 @@ class Term:
       (duplicates add up);
     * ``accepted(t, u)``: the post-step hook, after every accepted step and at the start
       (u full, in serial order); the term's history moves here. A SolveError raised here
-      ends the run with its message.
+      ends the run with its message;
+    * ``history_names``: the attributes (arrays) that hook moves, the history not in U: a
+      checkpoint saves them (``history()``) and a restarted run puts them back
+      (``restore``).
     """
 
     rows = cols = _NONE
+    history_names = ()
+
+    def history(self):
+        """The term's history not in U (name -> array), for a checkpoint."""
+        return {n: np.array(getattr(self, n), float) for n in self.history_names}
+
+    def restore(self, history):
+        """Put back a :meth:`history` (a restarted run)."""
+        for n in self.history_names:
+            setattr(self, n, np.array(history[n], float))
 
     def add_residual(self, t, u, udot, f):
         pass

@@ -190,6 +190,8 @@ class GrooveFriction(Term):
         self.anchors = new
         return float(moved.max()) if moved.size else 0.0
 
+    history_names = ("anchors",)
+
     def accepted(self, t, u):
         """Post-step hook: the return mapping of ``update``."""
         self.update(t, u)

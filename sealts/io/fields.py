@@ -13,20 +13,31 @@ import numpy as np
 
 
 class FieldSeries:
-    def __init__(self, path, X, conn, root=True):
+    def __init__(self, path, X, conn, root=True, frames=None):
+        """``frames``: a resumed run's frames so far, ``steps`` of the series it continues
+        (its HDF5 file is kept up to them, later frames dropped)."""
         self.root = root
         if not root:
             return
         import h5py
         self.xdmf = Path(path).with_suffix(".xdmf")
         self.h5name = self.xdmf.with_suffix(".h5").name
+        self.nn, self.nc = X.shape[0], conn.shape[0]
+        self.steps = []            # (t, [(name, center, shape)])
+        if frames is not None:
+            self.h5 = h5py.File(self.xdmf.with_suffix(".h5"), "r+")
+            for name in list(self.h5):
+                if name.startswith("step") and int(name[4:]) >= len(frames):
+                    del self.h5[name]
+            self.steps = [(float(t), [(n, c, tuple(s)) for n, c, s in items])
+                          for t, items in frames]
+            self._write_xdmf()
+            return
         self.h5 = h5py.File(self.xdmf.with_suffix(".h5"), "w")
         points = np.zeros((X.shape[0], 3))
         points[:, :2] = X
         self.h5["mesh/geometry"] = points
         self.h5["mesh/topology"] = np.asarray(conn, np.int64)
-        self.nn, self.nc = X.shape[0], conn.shape[0]
-        self.steps = []            # (t, [(name, center, shape)])
 
     def add(self, t, point_data, cell_data=None):
         """Point arrays (n_nodes or n_nodes x k) and cell arrays (n_cells) at time t."""

@@ -15,6 +15,8 @@ OUTDIR/
                  later scene
   series.png     transient runs: flows, leakage and time step over time
   manifest.json  the files this run wrote (rewritten as each new one appears)
+  stroke_checkpoint.h5  seal scenes with a stroke: the state at the stroke's last stop, for
+                 ``sealts run SCENE --restart OUTDIR`` (sealts/steps/stroke_checkpoint.py)
 
 A new run first deletes the files an earlier run's manifest lists (and, for directories of
 runs older than the manifest, the names above), except those the new scene reads (a state
@@ -40,8 +42,11 @@ MANIFEST = "manifest.json"
 
 
 class Writer:
-    def __init__(self, outdir, comm, plots=True, keep=()):
-        """``keep``: paths the run reads (a ``[start] state`` file), never deleted."""
+    def __init__(self, outdir, comm, plots=True, keep=(), resume=False):
+        """``keep``: paths the run reads (a ``[start] state`` file), never deleted.
+        ``resume``: the run continues the one in OUTDIR (``--restart``): its files stay, in
+        the manifest; the resumed step rewrites its series and profiles from a checkpoint
+        (``restore_series``, ``restore_profiles``)."""
         self.dir = Path(outdir)
         self.root = comm.getRank() == 0
         self.plots = plots
@@ -51,16 +56,23 @@ class Writer:
         self.written = []
         if self.root:
             self.dir.mkdir(parents=True, exist_ok=True)
-            self._clear(keep)
+            if resume:
+                self.written = self._manifest()
+            else:
+                self._clear(keep)
             self._save_manifest()
+
+    def _manifest(self):
+        """The files the manifest in OUTDIR lists (bare names only)."""
+        try:
+            old = json.loads((self.dir / MANIFEST).read_text())["files"]
+            return [n for n in old if isinstance(n, str) and Path(n).name == n]
+        except (OSError, ValueError, KeyError, TypeError):
+            return []
 
     def _clear(self, keep):
         """Delete an earlier run's files (its manifest's, else the legacy names)."""
-        try:
-            old = json.loads((self.dir / MANIFEST).read_text())["files"]
-            old = [n for n in old if isinstance(n, str) and Path(n).name == n]
-        except (OSError, ValueError, KeyError, TypeError):
-            old = []
+        old = self._manifest()
         keep = {Path(k).resolve() for k in keep}
         for name in set(old) | set(LEGACY):
             f = self.dir / name
@@ -107,6 +119,20 @@ class Writer:
         f, w = self._csv("series.csv", list(row))
         w.writerow({k: (f"{v:.10g}" if isinstance(v, float) else v) for k, v in row.items()})
         f.flush()
+
+    def restore_series(self, rows):
+        """A resumed run's rows so far: series.csv written anew from them."""
+        for row in rows:
+            self.series(row)
+
+    def restore_profiles(self, name, profiles):
+        """A resumed run's profiles so far, (t, profile, label) each: ``name`` anew."""
+        for t, prof, label in profiles:
+            self.profile(t, prof, name=name, label=label)
+
+    def profiles_written(self, name):
+        """The profiles written to ``name`` so far, (t, profile, label) each (rank 0)."""
+        return list(self._profiles.get(name, []))
 
     @property
     def last_row(self):

@@ -240,15 +240,27 @@ class HookOnly(Term):
     def __init__(self, term):
         self.term = term
 
+    @property
+    def history_names(self):
+        return self.term.history_names
+
     def accepted(self, t, u):
         self.term.accepted(t, u)
 
+    def history(self):
+        return self.term.history()
 
-class SerialTermOnLocal(Term):
+    def restore(self, history):
+        self.term.restore(history)
+
+
+class SerialTermOnLocal(HookOnly):
     """A term whose dofs are serial numbers, evaluated on a local vector: its dofs (rows
     and columns) are copied into a serial-length work array, the term runs there, and its
     residual rows are copied back. O(the term's dofs) per call; the term object is shared,
-    so state updated between steps (the pressure front) is seen here."""
+    so state updated between steps (the pressure front) is seen here. Its hook and history
+    are the term's own (u is full and serial already), as on the ranks that run it through
+    :class:`HookOnly`."""
 
     def __init__(self, term, local_of_serial):
         self.term = term
@@ -279,7 +291,3 @@ class SerialTermOnLocal(Term):
         us, uds = self._load(u, udot)
         return self.term.jacobian_values(t, us, uds, shift)
 
-    def accepted(self, t, u):
-        """The term's own hook (u is full and serial already); the other ranks run it
-        through :class:`HookOnly`."""
-        self.term.accepted(t, u)

@@ -38,6 +38,8 @@ the post-step hooks, the observers and ``gather`` get) are in serial order on ev
 written by its owner only; every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
 (the default parallel preconditioner is ``redundant`` LU).
 """
+from dataclasses import asdict
+
 import numpy as np
 from petsc4py import PETSc
 
@@ -111,6 +113,10 @@ class Problem:
         # stop at a step of TS's minimum size (``_check_min_step``); a problem whose fastest
         # physics needs steps that small (a Prony term of 1e-8 s over 1e4 s) leaves it off
         self.stop_at_min_step = False
+        # restart the integrator (BDF from first order) at every stop of ``transient``, so
+        # that a run resumed from a checkpoint there is this run to the last bit (without,
+        # PETSc's BDF carries its history across a stop)
+        self.restart_at_stops = False
 
         self.dofs = dofs
         if dofs is None:      # replicated: every rank has every dof, adds its own rows
@@ -444,7 +450,31 @@ class Problem:
                          "the solution changes faster than the error tolerance can follow "
                          f"(a step this small is accepted unchecked){name}")
 
-    def transient(self, u0, t0, t_end, dt0, stops=(), observers=(), rtol=1e-6, atol=1e-8):
+    def snapshot(self):
+        """At a stop of :meth:`transient` (from an observer's ``stop``): what a run resumed
+        there needs to go on as this one does (``transient(..., resume=snapshot)``): the
+        time, the step TS takes next, the counts so far, the min-step check's last step and
+        the histories of the terms that carry one, in their order. With ``restart_at_stops``
+        ``transient`` restarts the integrator at every stop (``TSRestartStep``: BDF from
+        first order), so nothing else carries over."""
+        ts = self._ts
+        c = self.counters + Counters(ts.getStepNumber(), ts.getStepRejections(),
+                                     ts.getSNESIterations(), ts.getKSPIterations())
+        return {"t": ts.getTime(), "dt": ts.getTimeStep(),
+                "last_dt": -1.0 if self._last_dt is None else self._last_dt,
+                "counters": asdict(c),
+                "step": ts.getStepNumber() + self._offset[0],
+                "newton": ts.getSNESIterations() + self._offset[1],
+                "history": {str(k): term.history()
+                            for k, term in enumerate(self._with_history())}}
+
+    def _with_history(self):
+        """The terms that carry a history, in order (the same on every rank: the ranks
+        that do not assemble a boundary term run its hook, :class:`HookOnly`)."""
+        return [term for term in self.terms if term.history_names]
+
+    def transient(self, u0, t0, t_end, dt0, stops=(), observers=(), rtol=1e-6, atol=1e-8,
+                  resume=None):
         """Integrate from t0 to t_end with adaptive steps; return the full final state.
 
         After every accepted step (and at t0) each term's post-step hook ``accepted(t, u)``
@@ -454,12 +484,26 @@ class Problem:
         step, ``close`` when the run ends or fails. ``atol``: a number, or one
         per unknown (full, serial order; a huge one leaves that unknown out of the local
         error estimate).
+
+        ``resume``: a :meth:`snapshot` taken at t0 by an earlier run (u0 its state, dt0 its
+        step): the terms' histories and the counts are put back, and neither the hooks nor
+        the observers see t0 again (they saw it in that run; the observers are restored by
+        their owner).
         """
         last, last_u = [None], [None]
         raised = []
         observers = list(observers)
         targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
+        targets = [s for s in targets if s > t0]      # a resumed run that had finished
         self._dt_min = None
+        self._offset = (0, 0)
+        if resume is not None:
+            with_history = self._with_history()
+            for k, history in resume["history"].items():
+                with_history[int(k)].restore(history)
+            self.counters = Counters(**{k: int(v) for k, v in resume["counters"].items()})
+            self._offset = (int(resume["step"]), int(resume["newton"]))
+            last[0] = float(t0)
 
         def monitor(ts, step, t, X):
             # TS calls its monitor at the start of every solve(): report each state once
@@ -473,7 +517,8 @@ class Problem:
                     self._check_min_step(t_prev, t, u, rtol, atol)
                 last_u[0] = u
                 self.accepted(t, u)
-                info = StepInfo(step, ts.getTimeStep(), ts.getSNESIterations())
+                info = StepInfo(step + self._offset[0], ts.getTimeStep(),
+                                ts.getSNESIterations() + self._offset[1])
                 for obs in observers:
                     obs.accepted(t, u, info)
             except (SolveError, interrupt.Interrupted) as e:   # PETSc: "error 101"
@@ -483,13 +528,19 @@ class Problem:
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
         self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * max(float(t_end - t0), 1e-300))
         self._last_u, self._last_dt = last_u, None
+        if resume is not None:
+            last_u[0] = np.array(u0, float)
+            self._last_dt = None if resume["last_dt"] < 0 else float(resume["last_dt"])
         X = self._owned(u0)
+        self._ts = ts
         try:
             u = np.array(u0, float)
-            for obs in observers:
+            for obs in observers if resume is None else ():
                 obs.start(t0, u)
-            for target in targets:
+            for k, target in enumerate(targets):
                 ts.setMaxTime(target)
+                if k and self.restart_at_stops:   # what a run resumed here does
+                    ts.restartStep()
                 try:
                     ts.solve(X)
                 except PETSc.Error as e:
@@ -514,6 +565,7 @@ class Problem:
             c.newton += ts.getSNESIterations()
             c.linear += ts.getKSPIterations()
             ts.destroy()
+            self._ts = None
             for obs in observers:
                 obs.close()
         return u

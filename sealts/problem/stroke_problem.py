@@ -220,6 +220,8 @@ class StrokeProblem:
         # a stage's Newton solve is converged by the residual's tests or once its correction
         # is below 1e-3 of every unknown's error tolerance (sealts.problem.newton_test)
         self.problem.update_test = 1e-3
+        # checkpoints at the stops (sealts/steps/stroke_checkpoint.py): BDF restarts there
+        self.problem.restart_at_stops = True
         # a step at TS's minimum size stops the run (Problem._check_min_step)
         self.problem.stop_at_min_step = True
 
@@ -395,13 +397,19 @@ class StrokeProblem:
             at[self.vdofs] = rtol * self.volume_scale
         return rt, at
 
-    def run(self, U0, t_end, dt0, rtol, output_times=(), observers=()):
+    def run(self, U0, t_end, dt0, rtol, output_times=(), observers=(), resume=None):
+        """TS from t = 0 (U0 from :meth:`start`) to t_end, stopping at the output times and
+        the law's kinks and reversals; ``resume``: a Problem snapshot at one of those stops
+        (U0 its state), from which the run goes on as the one that took it."""
         m = self.motion
         stops = sorted(set(output_times) | set(m.kinks(t_end)) | set(m.reversals(t_end)))
         rtol, atol = self.tolerances(rtol)
+        t0 = 0.0 if resume is None else resume["t"]
+        dt0 = dt0 if resume is None else resume["dt"]
         try:
-            return self.problem.transient(U0, 0.0, t_end, dt0, stops=stops,
-                                          observers=observers, rtol=rtol, atol=atol)
+            return self.problem.transient(U0, t0, t_end, dt0, stops=stops,
+                                          observers=observers, rtol=rtol, atol=atol,
+                                          resume=resume)
         except StepTooSmall as e:
             if self.stab is None:
                 raise StepTooSmall(f"{e}; if the seal snaps there (a fold of its quasi-static "

@@ -1,7 +1,8 @@
 """A scene's run as a list of steps (docs/design.md).
 
     seal:  [Mount, Pressurise (p_in != 0), Checkpoint] or [Restart],
-           then Hold (hold.p_end) or Stroke (stroke.velocity)
+           then Hold (hold.p_end) or Stroke (stroke.velocity);
+           --restart OUTDIR: [Restart, Stroke] from OUTDIR's stroke checkpoint
     ihl:   [Mount, Pressurise (p_in != 0)] or [Restart], then Ihl
     film:  [SteadyFilm] or [TransientFilm]
 
@@ -33,8 +34,11 @@ def steps_1_2(scene):
     return [Mount()] + ([Pressurise()] if scene.fluid.p_in != 0.0 else [])
 
 
-def steps_for(scene, command="run"):
-    """The steps of a scene (``command``: "run" or "ihl")."""
+def steps_for(scene, command="run", resume=None):
+    """The steps of a scene (``command``: "run" or "ihl"); ``resume``: a stroke checkpoint
+    to go on from (``--restart``; :func:`sealts.steps.stroke_checkpoint.check_restart`)."""
+    if resume is not None:
+        return [Restart(resume), Stroke(resume=resume)]
     if scene.model == "film":
         return [SteadyFilm() if scene.analysis.type == "steady" else TransientFilm()]
     steps = steps_1_2(scene)
@@ -78,9 +82,9 @@ def prepare(scene, comm=None, writer=None, say=None):
     return run_steps(steps_1_2(scene), new_state(scene, comm, writer, say))
 
 
-def run_scene(scene, writer, comm, command="run", petsc_options=None):
+def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=None):
     """Run a scene's steps, write its fields (seal) and ``summary.json``; returns the
-    summary."""
+    summary. ``resume``: a stroke checkpoint the run goes on from (``--restart``)."""
     from ..io.provenance import provenance
     t_wall = time.perf_counter()
     state = new_state(scene, comm, writer)
@@ -107,7 +111,7 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None):
         writer.summary(summary)
         return summary
 
-    steps = steps_for(scene, command)
+    steps = steps_for(scene, command, resume)
     try:
         run_steps(steps, state)
     except (Exception, Interrupted) as e:

@@ -55,17 +55,22 @@ class RunState:
                        results=copy.deepcopy(self.results),
                        parts=copy.deepcopy(self.parts), done=list(self.done))
 
-    def save(self, path):
-        """Write the state (rank 0) as an HDF5 file, whole: a temporary file renamed into
-        place, so a reader never sees half a state."""
+    def file_data(self):
+        """(arrays, attributes) of the state file: the displacement per node, the mesh
+        coordinates, the front's reach; p_in, p_crit, t, the scene and the results."""
         m = self.model
-        arrays = {"u": self.u[m.udofs], "X": m.mesh.X}
+        arrays = {"u": np.array(self.u[m.udofs]), "X": m.mesh.X}
         attrs = {"p_in": self.scene.fluid.p_in, "t": self.t, "scene": self.scene.name,
                  "source": self.scene.source, "results": json.dumps(self.results)}
         if self.load is not None:
             arrays["front_reach"] = np.asarray(self.load.reach, float)
             attrs["p_crit"] = self.load.p_crit
-        self.writer.state(arrays, attrs, name=path)
+        return arrays, attrs
+
+    def save(self, path):
+        """Write the state (rank 0) as an HDF5 file, whole: a temporary file renamed into
+        place, so a reader never sees half a state."""
+        self.writer.state(*self.file_data(), name=path)
 
 
 def read_state(path):

@@ -20,6 +20,7 @@ from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
 from ..problem.stroke_problem import StrokeProblem
 from ..solid.stresses import stress_cells
 from .base import Step
+from .stroke_checkpoint import PROFILES, Resumed, StrokeCheckpoint
 
 
 class StrokeColumns:
@@ -76,10 +77,18 @@ def seal_fields(model, stroke):
 class Stroke(Step):
     name = "stroke"
 
+    def __init__(self, resume=None):
+        """``resume``: the path of a stroke checkpoint to go on from
+        (:mod:`sealts.steps.stroke_checkpoint`)."""
+        self.resume = resume
+
     def run(self, state):
         model, scene, say, writer = state.model, state.scene, state.say, state.writer
         st = scene.stroke
         t_wall = time.perf_counter()
+        back = Resumed(self.resume) if self.resume else None
+        if back is not None:
+            back.restore_run(state)
         stroke = StrokeProblem(model, state.u, scene, state.load)
         if stroke.viscoelastic:
             ves = stroke.viscoelastic
@@ -92,18 +101,30 @@ class Stroke(Step):
         s0 = stroke.scalars(0.0, U)
         say(f"stroke start: film load {s0['load_fluid']:.5g} N, asperity load "
             f"{s0['load_asperity']:.5g} N, Q_out = {s0['Q_out']:.4g} mm^3/s", force=True)
-        integrals = CycleIntegrals()
+        integrals, columns = CycleIntegrals(), StrokeColumns(stroke)
         line = StepLine("stroke step", [("v", "v", 1.0, "mm/s"), ("Newton", "newton", 1, ""),
                                         ("min h", "h_min", 1e3, "um")])
-        series = Series(writer, [StrokeColumns(stroke), solver_columns, integrals], say, line)
+        series = Series(writer, [columns, solver_columns, integrals], say, line)
         wanted = sorted(set(st.output_times) | {0.0, st.t_end})
         writer.path("stroke_fields.h5")
         fields = Fields(FieldSeries(writer.path("stroke_fields.xdmf"), model.mesh.X,
-                                    model.mesh.conn, writer.root),
+                                    model.mesh.conn, writer.root,
+                                    frames=back.frames if back else None),
                         seal_fields(model, stroke), wanted)
-        outputs = [series, Profiles(writer, stroke.profile, "stroke_profiles.csv", wanted),
-                   fields]
-        U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, outputs)
+        outputs = [series, Profiles(writer, stroke.profile, PROFILES, wanted), fields]
+        if back is not None:      # the outputs and the state as they stood at its stop
+            U = back.U
+            series.rows = list(back.rows)
+            writer.restore_series(back.rows)
+            writer.restore_profiles(PROFILES, back.profiles)
+            integrals.transport, integrals.last = dict(back.transport), back.rows[-1]
+            columns.last = (back.t, U)
+            say(f"stroke resumed at t = {back.t:.6g} s from {back.path}", force=True)
+        outputs.append(StrokeCheckpoint(state, stroke, series, integrals, fields,
+                                        wall_before=back.wall if back else 0.0))
+        t_wall -= back.wall if back else 0.0
+        U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, outputs,
+                       resume=back.snapshot if back else None)
         rows = series.rows
         v = np.array([r["v"] for r in rows])
         F = np.array([r["friction_total"] for r in rows])
@@ -129,5 +150,7 @@ class Stroke(Step):
             "wall_time_s": time.perf_counter() - t_wall,
             "units": {"volume": "mm^3", "force": "N", "work": "N mm"},
         }
+        if back is not None:
+            state.parts["stroke"]["restarted_at"] = back.t
         state.u, state.t = stroke.displacement(U), st.t_end
         state.counters.add(c)

@@ -1,0 +1,99 @@
+"""Checkpoint and restart of the stroke: ``sealts run SCENE --restart OUTDIR``.
+
+The stroke writes a checkpoint at each of its stops (output times, the reversal, t_end),
+where the run restarts its integrator anyway (BDF from first order, ``TSRestartStep``).
+A run stopped by SIGTERM part-way and restarted goes on from its last checkpoint; since the
+restarted run meets the same states, steps and histories (U, the next step, the friction
+anchors) as the uninterrupted one, its series, profiles, field frames and results are the
+uninterrupted run's to the last bit, wherever the signal fell. Only the wall time and
+``restarted_at`` differ. A checkpoint is refused for a scene that differs in a key that
+moves the answer, naming the key.
+"""
+import json
+import signal
+import subprocess
+import sys
+import time
+
+import h5py
+import numpy as np
+import pytest
+
+from conftest import ROOT, config_text
+
+
+def _sealts(*args, **kw):
+    return subprocess.run([sys.executable, "-m", "sealts", "run", *map(str, args)],
+                          capture_output=True, text=True, cwd=ROOT, timeout=600, **kw)
+
+
+def _interrupted(scene, out, after):
+    """Run the scene, SIGTERM it once its series passes t = after (s)."""
+    p = subprocess.Popen([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    series, t0 = out / "series.csv", time.monotonic()
+    while p.poll() is None and time.monotonic() - t0 < 300:
+        try:
+            last = series.read_text().splitlines()[-1].split(",")[0]
+            if float(last) > after:
+                p.send_signal(signal.SIGTERM)
+                break
+        except (OSError, IndexError, ValueError):
+            pass
+        time.sleep(0.02)
+    p.communicate(timeout=120)
+    return p.returncode
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """The coarse O-ring cycle (0.1/0.4 mesh, the paper's 10 s sine, stops at 1, 2.5, 5, 6,
+    7.5 and 10 s) run whole (a), and stopped after t = 3 s then restarted (b)."""
+    d = tmp_path_factory.mktemp("restart")
+    text = config_text("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4,
+                                             "cache": str(ROOT / "meshes")},
+                       output={"plot": False})
+    scene = d / "coarse.toml"
+    scene.write_text(text)
+    r = _sealts(scene, "-o", d / "a")
+    assert r.returncode == 0, r.stderr
+    code = _interrupted(scene, d / "b", after=3.0)
+    stopped = json.loads((d / "b" / "summary.json").read_text())
+    restarted = _sealts(scene, "--restart", d / "b")
+    return d, scene, text, code, stopped, restarted
+
+
+def test_a_stopped_stroke_restarted_is_the_uninterrupted_one(runs):
+    d, _, _, code, stopped, restarted = runs
+    assert code == 143 and stopped["status"] == "interrupted"
+    assert 3.0 < stopped["t_reached"] < 10.0
+    assert restarted.returncode == 0, restarted.stderr
+    assert "stroke resumed at t = 2.5 s" in restarted.stdout   # the stop before t = 3 s
+    a, b = (json.loads((d / x / "summary.json").read_text()) for x in "ab")
+    assert b["status"] == "finished" and b["stroke"].pop("restarted_at") == 2.5
+    for s in (a, b):
+        s["stroke"].pop("wall_time_s")
+        for k in ("wall_time_s", "provenance"):
+            s.pop(k)
+    assert b == a          # every result and count, to the last bit
+    for name in ("series.csv", "stroke_profiles.csv", "stroke_fields.xdmf"):
+        assert (d / "b" / name).read_text() == (d / "a" / name).read_text(), name
+    with h5py.File(d / "a" / "stroke_fields.h5") as fa, \
+            h5py.File(d / "b" / "stroke_fields.h5") as fb:
+        assert sorted(fa) == sorted(fb)
+        for g in fa:
+            for k in fa[g]:
+                assert np.array_equal(fa[g][k][()], fb[g][k][()]), (g, k)
+    ma, mb = (json.loads((d / x / "manifest.json").read_text())["files"] for x in "ab")
+    assert sorted(ma) == sorted(mb)
+
+
+def test_a_checkpoint_of_another_scene_is_refused(runs):
+    d, _, text, *_ = runs
+    other = d / "other.toml"
+    other.write_text(text.replace("v_max = 500.0", "v_max = 400.0"))
+    assert other.read_text() != text
+    r = _sealts(other, "--restart", d / "a")
+    assert r.returncode == 2 and "Traceback" not in r.stderr
+    line, = r.stderr.strip().splitlines()
+    assert "another scene" in line and "stroke.v_max = 500.0 there, 400.0 here" in line
