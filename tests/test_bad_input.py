@@ -53,6 +53,12 @@ CHECK = [
     ("rod larger than groove", seal(rod={"radius": 29.9}), {}, "rod diameter"),
     ("over-squeezed", seal(groove={"diameter": 56.0}), {}, "squeeze"),
     ("corner radius too large", seal(groove={"corner_radius": 2.9}), {}, "groove.corner_radius"),
+    ("seal corner radius on an O-ring", seal(seal={"corner_radius": 0.1}), {},
+     "seal.corner_radius is the rectangle's"),
+    ("seal corner radius too large", seal(seal={"shape": "rectangle", "inner_diameter": 50.1,
+                                                "height": 2.4, "width": 2.0,
+                                                "corner_radius": 1.0}), {},
+     "seal.corner_radius = 1 mm must be below half"),
     ("contact mesh coarser than bulk", seal(mesh={"h_contact": 0.5, "h_bulk": 0.4}), {},
      "mesh.h_contact"),
     ("mesh too large for the machine", seal(mesh={"h_contact": 1e-4}), {}, "mesh nodes"),
@@ -108,6 +114,15 @@ RUN = [
      [], "start.state"),
     ("state file without a displacement", seal(start={"state": "s.h5"}), {"s.h5": "EMPTY_H5"},
      [], "start.state"),
+    ("restart without a checkpoint", seal(), {}, ["--restart", "{dir}"],
+     "no stroke_checkpoint.h5 in"),
+    ("restart file not a checkpoint", seal(), {"stroke_checkpoint.h5": "EMPTY_H5"},
+     ["--restart", "{dir}"], "is not a stroke checkpoint"),
+    ("restart of a scene without a stroke", SLIDER, {}, ["--restart", "{dir}"],
+     "--restart continues a seal scene's stroke"),
+    ("restart into another directory", seal(), {}, ["--restart", "{dir}", "-o", "{dir}/x"],
+     "names another directory"),
+    ("restart without its directory", seal(), {}, ["--restart"], "--restart needs a directory"),
     ("mesh file not a mesh", seal(seal={"shape": "file", "mesh_file": "m.msh"}),
      {"m.msh": "garbage\n"}, [], "seal.mesh_file"),
 ]
@@ -153,7 +168,7 @@ def test_bad_scene(tmp_path, name, text, files, words):
 def test_bad_run(tmp_path, name, text, files, args, words):
     scene = _write(tmp_path, text, files)
     args = [a.replace("{dir}", str(tmp_path)) for a in args]
-    if "-o" not in args:
+    if "-o" not in args and "--restart" not in args:
         args += ["-o", str(tmp_path / "out")]
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), *args],
                        capture_output=True, text=True, cwd=ROOT, timeout=300)

@@ -120,6 +120,38 @@ def test_rect_ring_mounts_into_rounded_corners(tmp_path):
     assert g["wall_pressure_side"] == pytest.approx(-g["wall_atmosphere_side"], rel=1e-5)
 
 
+@pytest.mark.parametrize("mirror", [False, True])
+def test_rect_ring_corner_radius_rounds_the_rod_side(tmp_path, mirror):
+    """seal.corner_radius: the rectangle's two corners on the rod side are quarter circles
+    of that radius, part of the rod side. Its chain runs from the pressure-side face to the
+    atmosphere-side face with z increasing, ends where the arcs meet those faces (r = r_i +
+    rc), its arc nodes lie on the circles, and the four groups still cover the boundary
+    loop edge for edge. Sharp corners (rc = 0) keep the mesh they had (its cache key)."""
+    from sealts.mesh.seal_mesh import RectangularRing, _key, build_mesh
+    from sealts.solid.pressure import boundary_loop
+    ri, ro, z0, z1, rc = 25.05, 27.45, -1.0, 1.0, 0.2
+    mesh = build_mesh(RectangularRing(ri, ro, z0, z1, rc), 0.05, 0.2, 0.3, tmp_path,
+                      mirror=mirror)
+    chain = mesh.chain("rod_side")
+    r, z = mesh.X[chain, 0], mesh.X[chain, 1]
+    assert np.all(np.diff(z) > 0)
+    assert z[0] == pytest.approx(z0, abs=1e-12) and z[-1] == pytest.approx(z1, abs=1e-12)
+    assert r[0] == pytest.approx(ri + rc) and r[-1] == pytest.approx(ri + rc)
+    low, high = z < z0 + rc, z > z1 - rc
+    assert low.sum() >= 4 and high.sum() >= 4          # the arcs are meshed
+    for on, zc in ((low, z0 + rc), (high, z1 - rc)):
+        assert np.allclose(np.hypot(r[on] - (ri + rc), z[on] - zc), rc, atol=1e-9)
+    assert np.allclose(r[~(low | high)], ri)
+    groups = np.concatenate([np.sort(e, axis=1) for e in mesh.edges.values()])
+    loop = np.sort(boundary_loop(mesh.conn), axis=1)
+    assert len(groups) == len(loop) == len(np.unique(groups, axis=0))
+    assert {tuple(e) for e in groups.tolist()} == {tuple(e) for e in loop.tolist()}
+    sharp = RectangularRing(ri, ro, z0, z1)
+    assert _key(sharp, 0.05, 0.2, 0.3)[1] == {
+        "kind": "RectangularRing", "r_inner": ri, "r_outer": ro, "z_min": z0, "z_max": z1,
+        "h_contact": 0.05, "h_bulk": 0.2, "grading": 0.3, "version": 1}
+
+
 def test_mounted_oring_converges_under_mesh_refinement(tmp_path):
     """Contact force and width of the paper's O-ring on three meshes: the changes shrink and
     the finest two agree to 1 % (force) and 5 % (width; it is resolved by h_contact)."""

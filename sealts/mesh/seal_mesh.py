@@ -86,11 +86,14 @@ class RectangularRing:
     r_outer: float
     z_min: float
     z_max: float
+    corner_radius: float = 0.0    # of the two corners on the rod side (part of it), mm
 
 
 def _key(shape, h_contact, h_bulk, grading_distance, mirror=False):
     spec = dict(kind=type(shape).__name__, **asdict(shape), h_contact=h_contact,
                 h_bulk=h_bulk, grading=grading_distance, version=1)
+    if not spec.get("corner_radius", 1.0):     # sharp corners keep their meshes' keys
+        del spec["corner_radius"]
     if mirror:             # only then: the default meshes keep their keys
         spec["mirror"] = True
     text = json.dumps(spec, sort_keys=True)
@@ -172,6 +175,36 @@ def _mirrored_mesh(shape, h_contact, h_bulk, grading_distance):
     return _tidy(X2, conn2, edges2)
 
 
+def _rectangle(occ, s, half):
+    """The rectangle's boundary curves counter-clockwise from the rod side, and the curves
+    of each group (rod side, pressure side, groove, atmosphere side or the mid-plane). With
+    a corner radius rc the two corners on the rod side are quarter circles, part of the
+    rod side: a tilted ring then meets the rod with its rounded corner, which the film and
+    the asperity contact cover (with sharp corners a corner node off the rod side enters
+    the rod)."""
+    rc, ri, ro = s.corner_radius, s.r_inner, s.r_outer
+    z_top = mid_plane(s) if half else s.z_max
+    if rc == 0.0:
+        pts = [occ.addPoint(ri, z_top, 0), occ.addPoint(ri, s.z_min, 0),
+               occ.addPoint(ro, s.z_min, 0), occ.addPoint(ro, z_top, 0)]
+        curves = [occ.addLine(pts[i], pts[(i + 1) % 4]) for i in range(4)]
+        return curves, [[c] for c in curves]
+    rod_top = occ.addPoint(ri, z_top - (0.0 if half else rc), 0)
+    rod_low = occ.addPoint(ri, s.z_min + rc, 0)
+    low_end = occ.addPoint(ri + rc, s.z_min, 0)
+    out_low, out_top = occ.addPoint(ro, s.z_min, 0), occ.addPoint(ro, z_top, 0)
+    rod = [occ.addLine(rod_top, rod_low),
+           occ.addCircleArc(rod_low, occ.addPoint(ri + rc, s.z_min + rc, 0), low_end)]
+    sides = [occ.addLine(low_end, out_low), occ.addLine(out_low, out_top)]
+    if half:                      # the mid-plane closes the loop; it has no corner
+        sides.append(occ.addLine(out_top, rod_top))
+        return rod + sides, [rod] + [[c] for c in sides]
+    top_end = occ.addPoint(ri + rc, z_top, 0)
+    sides.append(occ.addLine(out_top, top_end))
+    corner = occ.addCircleArc(top_end, occ.addPoint(ri + rc, z_top - rc, 0), rod_top)
+    return rod + sides + [corner], [[corner] + rod] + [[c] for c in sides]
+
+
 def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=False):
     """The gmsh mesh of the whole cross-section; with ``half`` of its half z <= z_m only,
     returned untidied with the nodes on the mid-plane: (X, conn, edges, mid)."""
@@ -197,23 +230,20 @@ def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=False):
                 pts = [occ.addPoint(rc + R * math.cos(a), shape.z0 + R * math.sin(a), 0)
                        for a in angles]
                 curves = [occ.addCircleArc(pts[i], c, pts[(i + 1) % 4]) for i in range(4)]
+            groups = [[c] for c in curves]
         else:
-            s = shape
-            z_top = mid_plane(s) if half else s.z_max
-            pts = [occ.addPoint(s.r_inner, z_top, 0), occ.addPoint(s.r_inner, s.z_min, 0),
-                   occ.addPoint(s.r_outer, s.z_min, 0), occ.addPoint(s.r_outer, z_top, 0)]
-            curves = [occ.addLine(pts[i], pts[(i + 1) % 4]) for i in range(4)]
+            curves, groups = _rectangle(occ, shape, half)
         loop = occ.addCurveLoop(curves)
         surf = occ.addPlaneSurface([loop])
         occ.synchronize()
         # curves in order: rod side, pressure side, groove, atmosphere side (the half: the
         # mid-plane, no group)
-        for name, cv in zip(GROUPS[:3] if half else GROUPS, curves):
-            gmsh.model.addPhysicalGroup(1, [cv], name=name)
+        for name, cvs in zip(GROUPS[:3] if half else GROUPS, groups):
+            gmsh.model.addPhysicalGroup(1, cvs, name=name)
         gmsh.model.addPhysicalGroup(2, [surf], name="seal")
         f = gmsh.model.mesh.field
         dist = f.add("Distance")
-        f.setNumbers(dist, "CurvesList", [curves[0]])
+        f.setNumbers(dist, "CurvesList", groups[0])
         f.setNumber(dist, "Sampling", 400)
         thr = f.add("Threshold")
         f.setNumber(thr, "InField", dist)
@@ -239,11 +269,11 @@ def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=False):
             raise RuntimeError("gmsh left non-quadrilateral elements")
         conn = np.vectorize(index.get)(quads[0].reshape(-1, 4).astype(np.int64))
         edges = {}
-        for name, cv in zip(GROUPS[:3] if half else GROUPS, curves):
-            _, _, en = gmsh.model.mesh.getElements(1, cv)
-            edges[name] = np.vectorize(index.get)(en[0].reshape(-1, 2).astype(np.int64))
+        for name, cvs in zip(GROUPS[:3] if half else GROUPS, groups):
+            en = np.concatenate([gmsh.model.mesh.getElements(1, cv)[2][0] for cv in cvs])
+            edges[name] = np.vectorize(index.get)(en.reshape(-1, 2).astype(np.int64))
         if half:
-            mid_tags, _, _ = gmsh.model.mesh.getNodes(1, curves[3], includeBoundary=True)
+            mid_tags, _, _ = gmsh.model.mesh.getNodes(1, groups[3][0], includeBoundary=True)
             mid = np.unique([index[int(t)] for t in mid_tags])
     finally:
         gmsh.finalize()

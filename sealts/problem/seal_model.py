@@ -235,7 +235,8 @@ def model_from_scene(scene, comm=None):
         else:
             shape = RectangularRing(0.5 * sl.inner_diameter,
                                     0.5 * sl.inner_diameter + sl.height,
-                                    z0 - 0.5 * sl.width, z0 + 0.5 * sl.width)
+                                    z0 - 0.5 * sl.width, z0 + 0.5 * sl.width,
+                                    sl.corner_radius)
         mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache,
                           mirror=m.symmetric)
     material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)

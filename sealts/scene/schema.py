@@ -117,6 +117,9 @@ class Seal:
     width: float = option(2.0, unit="mm", gt=0.0, doc="rectangle: axial width")
     height: float = option(2.0, unit="mm", gt=0.0, doc="rectangle: radial height")
     inner_diameter: float = option(50.0, unit="mm", gt=0.0, doc="rectangle: inner diameter")
+    corner_radius: float = option(0.0, unit="mm", ge=0.0,
+                                  doc="rectangle: radius of the two corners on the rod side, "
+                                      "part of the rod side (0: sharp)")
     symmetry: str = option("axisymmetric", choices=("axisymmetric", "planar"),
                            doc="axisymmetric ring or plane strain (per mm of depth)")
 
@@ -336,6 +339,8 @@ def _check_seal_geometry(s, base):
     if gr.corner_radius >= min(0.5 * gr.width, space):
         raise SceneError(f"groove.corner_radius = {gr.corner_radius:g} mm must be below half "
                          f"the groove width and the groove depth {space:g} mm")
+    if sl.corner_radius and sl.shape != "rectangle":
+        raise SceneError(f"seal.corner_radius is the rectangle's (seal.shape is {sl.shape!r})")
     if sl.shape == "file":
         if not sl.mesh_file:
             raise SceneError("seal.mesh_file must name a .msh or .geo file with "
@@ -356,6 +361,9 @@ def _check_seal_geometry(s, base):
                              f"groove.width = {gr.width:g} mm")
         inner, radial = 0.5 * sl.d1, sl.d2
     else:
+        if sl.corner_radius >= 0.5 * min(sl.width, sl.height):
+            raise SceneError(f"seal.corner_radius = {sl.corner_radius:g} mm must be below half "
+                             f"the rectangle's width and height")
         if sl.width >= gr.width:
             raise SceneError(f"seal.width = {sl.width:g} mm must be below "
                              f"groove.width = {gr.width:g} mm")
