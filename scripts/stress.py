@@ -17,8 +17,9 @@ ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction
 ``rtol`` 1e-2 and 1e-4; ``velocity`` constant, ramp-hold and an abrupt start-stop-reverse
 table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
 flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
-``stabilisation`` 10 and 40 MPa and the smooth rod with stroke.stabilisation = 1e-3. Not yet:
-back pressure (not modelled), a 15 h hold, the full pressure x clearance x amplitude grid.
+``stabilisation`` 10 and 40 MPa and the smooth rod with stroke.stabilisation = 1e-3;
+``clearance`` extrusion gaps of 0.02, 0.05 and 0.1 mm at 1, 5 and 10 MPa. Not yet: back
+pressure (not modelled), a 15 h hold, the full pressure x clearance x amplitude grid.
 Add a factor as one entry of FACTORS.
 """
 import argparse
@@ -75,6 +76,10 @@ FACTORS = {
                       for name, over in (("p_in 10 MPa", {"fluid": {"p_in": 10.0}}),
                                          ("p_in 40 MPa", {"fluid": {"p_in": 40.0}}),
                                          ("h_mix 7e-5 mm", {"asperity": {"h_mix": 7e-5}}))],
+    "clearance": [(f"clearance {c:g} mm, p_in {p:g} MPa", {"groove": {"clearance": c},
+                                                          "fluid": {"p_in": p}})
+                  for c, p in ((0.1, 1.0), (0.1, 5.0), (0.02, 10.0), (0.05, 10.0),
+                               (0.1, 10.0))],
     "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
              ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
 }

@@ -10,6 +10,9 @@ node's current position) and unit tangent t_k(x) in the (r, z) plane:
     k = 1: side wall a (z = z_a, pressure side), t = e_r   (replaced by arc a in its square)
     k = 2: side wall b (z = z_b, atmosphere side), t = e_r  (replaced by arc b in its square)
 
+With an extrusion gap a side wall's slot is, below the bore r_bore + rho_e, its rounded
+edge (n from the edge's centre, t = (-n_z, n_r)) or the bore (t = -e_z), as GrooveContact.
+
 The arc's tangent is e_z where it meets the bottom and +-e_r where it meets a side wall, so
 slot 0's surface and tangent are continuous along the groove's contour (slot 1 or 2 takes
 over from the arc at the side wall with the same tangent up to sign, and the law is odd).
@@ -55,7 +58,7 @@ import numpy as np
 
 from ..core import Term, of_time
 from .friction import check_law, saturation
-from .rigid import corner_arcs, softplus_penalty
+from .rigid import corner_arcs, softplus_penalty, wall_edges
 
 WALLS = ("bottom", "wall_pressure_side", "wall_atmosphere_side", "corner_pressure_side",
          "corner_atmosphere_side")
@@ -102,6 +105,20 @@ def groove_surfaces(groove, t, u):
         dtan[0, idx, 1, 0] = (1.0 - tz * nr) / d
         dtan[0, idx, 1, 1] = -tz * nz / d
         region[idx] = wall
+    for side, idx, gap, nr, nz, d in wall_edges(r, z, za, zb, g.edge):
+        pe, dpe = softplus_penalty(gap, k, dl)
+        wall = 1 if side < 0 else 2                     # the side wall its edge replaces
+        p[wall, idx] = pe
+        dp[wall, idx, 0], dp[wall, idx, 1] = dpe * nr, dpe * nz
+        tr, tz = -nz, nr                                # e_r on the face, -e_z on the bore
+        tan[wall, idx, 0], tan[wall, idx, 1] = tr, tz
+        dtan[wall, idx] = 0.0
+        on = d > 0.0                                    # the arc turns its tangent
+        inv = np.divide(1.0, d, out=np.zeros_like(d), where=on)
+        dtan[wall, idx, 0, 0] = -tr * nr * inv
+        dtan[wall, idx, 0, 1] = (-1.0 - tr * nz) * inv
+        dtan[wall, idx, 1, 0] = (1.0 - tz * nr) * inv
+        dtan[wall, idx, 1, 1] = -tz * nz * inv
     return p, dp, tan, dtan, region
 
 

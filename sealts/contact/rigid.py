@@ -21,6 +21,14 @@ the smooth penalty
 reference tributary area. With k = ``penalty`` (MPa/mm) the penetration under a wall pressure
 p is about p / k: 1e4 MPa/mm allows 0.1 um per MPa, against an O-ring squeeze of 0.63 mm.
 
+Extrusion gap (optional, ``edge = (r_bore, rho_e)``): the side walls end at the bore
+r_bore = r_rod + clearance above the rod, their lower edges rounded to rho_e. Below
+r_bore + rho_e a node feels, instead of its wall's face, the edge's arc centred at
+(r_bore + rho_e, z_w -+ rho_e) (g = |x - c| - rho_e, force p(g) away from the centre)
+while it is short of the centre's z, and beyond it the bore (g = r_bore - r, force p(g)
+towards the rod): seal material that passes the wall's plane has extruded into the gap.
+Gap and normal are continuous where the pieces meet.
+
 Groove corner radius rho (optional): the bottom corners are quarter circles centred at
 c_a = (r_G - rho, z_a + rho) and c_b = (r_G - rho, z_b - rho). A node in a corner's square
 (r > r_G - rho and z beyond the centre) feels that arc instead of the bottom and the side
@@ -66,6 +74,29 @@ def corner_arcs(r, z, rg, za, zb, rho):
         yield side, idx, d, dr_ / d, dz_ / d
 
 
+def wall_edges(r, z, za, zb, edge):
+    """The nodes below the side walls' rounded lower edges (module docstring), for wall a
+    (side -1) and wall b (side +1): yields (side, node indices, gap g, unit normal (nr, nz)
+    from the housing towards the node, distance d to the edge's centre or 0 under the bore).
+    Nothing without an edge (walls down to the rod)."""
+    if edge is None:
+        return
+    r_bore, rho = edge
+    cr = r_bore + rho
+    for zw, side in ((za, -1.0), (zb, 1.0)):
+        cz = zw + side * rho                      # the edge's centre, inside the housing
+        below = np.nonzero(r < cr)[0]
+        if below.size == 0:
+            continue
+        dr_, dz_ = r[below] - cr, z[below] - cz
+        arc = side * dz_ <= 0.0                   # before the centre: on the arc
+        d = np.where(arc, np.maximum(np.hypot(dr_, dz_), 1e-12), 0.0)
+        g = np.where(arc, d - rho, r_bore - r[below])
+        nr = np.where(arc, dr_ / np.where(arc, d, 1.0), -1.0)
+        nz = np.where(arc, dz_ / np.where(arc, d, 1.0), 0.0)
+        yield side, below, g, nr, nz, d
+
+
 def softplus_penalty(g, k, delta):
     """p = k delta ln(1 + exp(-g/delta)) and dp/dg, overflow-safe."""
     x = -g / delta
@@ -108,12 +139,16 @@ class GrooveContact(Term):
     with bottom corners rounded to ``corner_radius``."""
 
     def __init__(self, X, nodes, tributary, axisym, r_bottom, z_walls, penalty=1e4,
-                 delta=1e-4, udofs=None, depth=1.0, corner_radius=0.0):
+                 delta=1e-4, udofs=None, depth=1.0, corner_radius=0.0, edge=None):
+        """``edge``: (r_bore, rho_e), the radius (mm) where the side walls end above the
+        rod, leaving the extrusion gap r_bore - r_rod, and the radius of their rounded
+        lower edges; None: the walls reach down to the rod."""
         self.X, self.nodes = X, np.asarray(nodes)
         w = tributary[self.nodes] * (2 * np.pi * X[self.nodes, 0] if axisym else depth)
         self.w = w
         self.r_bottom, self.z_walls = r_bottom, z_walls
         self.k, self.delta, self.rho = penalty, delta, corner_radius
+        self.edge = None if edge is None else (float(edge[0]), float(edge[1]))
         udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
         self.ur, self.uz = udofs[self.nodes, 0], udofs[self.nodes, 1]
         # a 2x2 block per node: (r, r), (r, z), (z, r), (z, z)
@@ -132,9 +167,10 @@ class GrooveContact(Term):
         pa, dpa = softplus_penalty(z - za, k, dl)
         pz, dpz = softplus_penalty(zb - z, k, dl)
         fr, fa, fb = -pb, pa, -pz            # force per unit area on the seal
-        fr_a = np.zeros_like(r)              # radial part from corner a (to the bottom)
         Krr, Krz, Kzz = -dpb, np.zeros_like(r), -dpa - dpz
-        pmax = np.maximum(np.maximum(pb, pa), pz)
+        # each surface's pressure where it acts (the bottom or its corner arc, wall a or its
+        # corner arc or edge, wall b likewise): node_pressures is their largest
+        on = np.stack([pb, pa, pz])
         for side, idx, d, nr, nz in corner_arcs(r, z, rg, za, zb, rho):
             pc, dpc = softplus_penalty(rho - d, k, dl)
             fr[idx] = -pc * nr              # the arc pushes the node towards its centre
@@ -142,7 +178,8 @@ class GrooveContact(Term):
                 fa[idx] = -pc * nz           # in place of side wall a (wall b still acts)
             else:
                 fb[idx] = -pc * nz
-            pmax[idx] = np.maximum(pc, pz[idx] if side < 0 else pa[idx])
+            on[0, idx] = pc
+            on[1 if side < 0 else 2, idx] = 0.0
             # d(p n)/dx = -dp n n^T + p (I - n n^T) / d
             Krr[idx] = -dpc * nr * nr + pc * (1 - nr * nr) / d
             Krz[idx] = -dpc * nr * nz - pc * nr * nz / d
@@ -151,15 +188,33 @@ class GrooveContact(Term):
                 Kzz[idx] += -dpz[idx]
             else:
                 Kzz[idx] += -dpa[idx]
-        return pmax, (fr, fa, fb), (Krr, Krz, Kzz)
+        for side, idx, g, nr, nz, d in wall_edges(r, z, za, zb, self.edge):
+            # below the bore the wall's face is replaced by its edge (an arc pushing away
+            # from its centre) or the bore (pushing towards the rod)
+            pe, dpe = softplus_penalty(g, k, dl)
+            dface = dpa if side < 0 else dpz
+            fr[idx] += pe * nr
+            if side < 0:
+                fa[idx] = pe * nz
+            else:
+                fb[idx] = pe * nz
+            on[1 if side < 0 else 2, idx] = pe
+            # d(p n)/dx = dp/dg n n^T + p (I - n n^T) / d on the arc, dp/dg n n^T under
+            # the bore (n constant); K = -d(force)/dx
+            curv = np.divide(pe, d, out=np.zeros_like(pe), where=d > 0.0)
+            Krr[idx] += -dpe * nr * nr - curv * (1 - nr * nr)
+            Krz[idx] += -dpe * nr * nz + curv * nr * nz
+            Kzz[idx] += dface[idx] - dpe * nz * nz - curv * (1 - nz * nz)
+        return on.max(axis=0), (fr, fa, fb), (Krr, Krz, Kzz)
 
     def node_pressures(self, t, u):
         """Largest wall pressure (bottom, side wall or corner) at each of ``nodes``, MPa."""
         return self._evaluate(t, u)[0]
 
     def reactions(self, t, u):
-        """Total force on the seal (N): radial from the bottom (and the corners' radial
-        parts; inward < 0), axial from each side wall (and its corner)."""
+        """Total force on the seal (N): radial from the bottom (and the corners' and the
+        wall edges' radial parts; inward < 0), axial from each side wall (and its corner
+        and edge)."""
         _, (fr, fa, fb), _ = self._evaluate(t, u)
         return {"bottom": float(fr @ self.w), "wall_pressure_side": float(fa @ self.w),
                 "wall_atmosphere_side": float(fb @ self.w)}

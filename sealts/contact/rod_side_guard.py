@@ -20,6 +20,19 @@ from ..core import SolveError, Term
 FOLD = 0.1      # an element inverted by a tenth of its reference length
 
 
+def fold(side, u):
+    """The rod-side element most turned over (its current axial length against the
+    reference order, below -FOLD of its reference length), by its first chain index; -1 if
+    none is."""
+    dz = np.diff(side.Z)
+    if dz.size == 0:
+        return -1
+    order = np.sign(np.median(dz))
+    ratio = order * np.diff(side.y(u)) / np.abs(np.where(dz != 0.0, dz, np.inf))
+    k = int(np.argmin(ratio))
+    return k if ratio[k] < -FOLD else -1
+
+
 class RodSideGuard(Term):
     def __init__(self, side, depth, note=None):
         """``side``: the :class:`sealts.contact.rod_side.RodSide` (its ``off`` nodes, their
@@ -33,13 +46,8 @@ class RodSideGuard(Term):
 
     def _check_fold(self, t, u):
         side = self.side
-        dz = np.diff(side.Z)
-        if dz.size == 0:
-            return
-        order = np.sign(np.median(dz))
-        ratio = order * np.diff(side.y(u)) / np.abs(np.where(dz != 0.0, dz, np.inf))
-        k = int(np.argmin(ratio))
-        if ratio[k] >= -FOLD:
+        k = fold(side, u)
+        if k < 0:
             return
         y = side.y(u)
         a, b = side.chain[k], side.chain[k + 1]

@@ -53,8 +53,8 @@ class HoldProblem:
         terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge_terms,
                                   dofs=lay, solid=self.solid)
         terms.insert(1, self.prony)
-        terms += [model.rod_side_guard(self.side),
-                  RelaxedFront(self.load, self.node_contact_pressure, max_advance=1.0)]
+        terms += model.guards(self.side, self.groove, self.load.pressure) + [
+            RelaxedFront(self.load, self.node_contact_pressure, max_advance=1.0)]
         fields = {"displacement": lay.field_dofs("displacement")}
         if ves.prony_size:
             fields["prony"] = lay.field_dofs("prony")

@@ -11,6 +11,7 @@ import numpy as np
 from ..contact.asperity import ExponentialLaw, law_from_scene
 from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
                              tributary_lengths)
+from ..contact.extrusion_guard import ExtrusionGuard, extrusion
 from ..contact.rod_side_guard import RodSideGuard
 from ..contact.rod_side import RodSide
 from ..mesh.partition import Partition
@@ -45,7 +46,8 @@ class SealModel:
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
                  law=None, penalty=1e4, stabilisation=1e-3, depth=1.0,
-                 corner_radius=0.0, comm=None, hold_rolling=None):
+                 corner_radius=0.0, comm=None, hold_rolling=None, clearance=0.0,
+                 edge_radius=0.1, extrusion_limit=0.25):
         from petsc4py import PETSc
 
         from ..solid.pressure import boundary_loop
@@ -76,7 +78,10 @@ class SealModel:
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, bnd, trib, axisym, self.groove_radius,
                                     lambda t: groove_walls, penalty=penalty, depth=depth,
-                                    corner_radius=corner_radius, udofs=udofs)
+                                    corner_radius=corner_radius, udofs=udofs,
+                                    edge=((rod_radius + clearance, edge_radius)
+                                          if clearance > 0.0 else None))
+        self.extrusion_limit = extrusion_limit
         # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2);
         # summed over the ranks' cells
         mpi = comm.tompi4py()
@@ -138,6 +143,17 @@ class SealModel:
                     "hoop strain only friction holds a round section from rolling)")
 
         return RodSideGuard(side, self.law.contact_gap, note)
+
+    def guards(self, side=None, groove=None, pressure=None):
+        """The post-step guards of a run on this seal: with an extrusion gap the extrusion
+        guard (:mod:`sealts.contact.extrusion_guard`) on ``groove`` (default the model's;
+        ``pressure(t)`` the sealed pressure its message names), then the rod-side guard
+        (:meth:`rod_side_guard`)."""
+        guard = self.rod_side_guard(side)
+        groove = self.groove if groove is None else groove
+        if groove.edge is None:
+            return [guard]
+        return [ExtrusionGuard(groove, self.extrusion_limit, guard.side, pressure), guard]
 
     def problem(self, n, terms, linesearch="basic", **kw):
         """A Problem of this seal's terms on its communicator: the basic line search (the
@@ -207,6 +223,8 @@ class SealModel:
             "h_min": float(h.min()),
             "groove_reactions": self.groove.reactions(t, u),
         }
+        if self.groove.edge is not None:      # into the extrusion gap, mm
+            out["extrusion"] = extrusion(self.groove, t, u)[0]
         if quasi_static:
             # the viscous stabilisation's force at the end, against the contact load it must
             # not carry (zero when the final static solve succeeded)
@@ -245,7 +263,8 @@ def model_from_scene(scene, comm=None):
                      axisym=sl.symmetry == "axisymmetric",
                      law=law_from_scene(scene.asperity, material), penalty=scene.mount.penalty,
                      stabilisation=scene.mount.stabilisation,
-                     corner_radius=gr.corner_radius, comm=comm)
+                     corner_radius=gr.corner_radius, comm=comm, clearance=gr.clearance,
+                     edge_radius=gr.edge_radius, extrusion_limit=gr.extrusion_limit)
 
 
 def _file_mesh(path, cache, r_rod, groove):

@@ -73,6 +73,7 @@ Not yet in the stroke: updating the pressure penetration front during the stroke
 """
 import numpy as np
 
+from ..contact.extrusion_guard import extrusion
 from ..contact.friction import RodFriction
 from ..contact.friction_work import FrictionWork
 from ..contact.groove_friction import GrooveFriction
@@ -135,7 +136,7 @@ class StrokeProblem:
         trib = tributary_lengths(X, np.concatenate(list(mesh.edges.values())), X.shape[0])
         self.groove = GrooveContact(X, g.nodes, trib, axisym, lambda t: model.r_g_final,
                                     g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
-                                    corner_radius=g.rho)
+                                    corner_radius=g.rho, edge=g.edge)
         self.film = self.leakage = self.xdofs = None
         self.vdofs = np.zeros(0, np.int64)
         boundary = [self.rod, self.groove]
@@ -198,9 +199,9 @@ class StrokeProblem:
             prony = lay.field_dofs("prony")
             fields = {"prony": prony,
                       "displacement": np.setdiff1d(np.arange(self.n), prony)}
-        # post-step hooks run in the terms' order: the rod-side guard first (on every rank),
-        # then the frictions' return mapping
-        self.guard = model.rod_side_guard(side)
+        # post-step hooks run in the terms' order: the guards first (on every rank: rod
+        # side, extrusion), then the frictions' return mapping
+        self.guards = model.guards(side, self.groove, lambda t: fl.p_in)
         self._output_terms = self._relaxed_from = None
         self.problem = model.problem(
             self.n, self._terms(self.solid, self.prony, with_leakage=True),
@@ -233,7 +234,7 @@ class StrokeProblem:
                                 self.groove_friction, self.load,
                                 self.work if with_leakage else None) if t is not None]
         stab = [self.stab] if (self.stab is not None and with_leakage) else []
-        return ([self.guard, solid] + stab + ([prony] if prony is not None else [])
+        return (self.guards + [solid] + stab + ([prony] if prony is not None else [])
                 + self.layout.on_root(boundary))
 
     def start(self):
@@ -347,13 +348,16 @@ class StrokeProblem:
         if self.stab is not None and Udot is not None:
             ud = self.layout.udofs
             f_stab = float(np.abs(self.stab.c * self.node_volume[:, None] * Udot[ud]).sum())
-        return {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
+        out = {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
                 "friction_total": shear + solid, "friction_groove": groove,
                 "normal_load": load_fluid + load_asperity, "load_fluid": load_fluid,
                 "load_asperity": load_asperity, "Q_in": q_in, "Q_out": q_out,
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
                 "asperity_contact_length": length, "p_fluid_max": p_max,
                 "W_friction": work, "F_stabilisation": f_stab}
+        if self.groove.edge is not None:     # how far the seal is into the extrusion gap, mm
+            out["extrusion"] = extrusion(self.groove, t, U)[0]
+        return out
 
     @property
     def volume_scale(self):

@@ -132,6 +132,15 @@ class Groove:
                                   doc="radius of the two bottom corners (0: sharp)")
     mu: float = option(0.1, ge=0.0, doc="friction coefficient of the groove walls (stroke "
                                         "with friction; elastic slip stroke.gamma_crit)")
+    clearance: float = option(0.0, unit="mm", ge=0.0,
+                              doc="extrusion gap: radial clearance between the rod and the "
+                                  "bore where the side walls end (0: walls down to the rod)")
+    edge_radius: float = option(0.1, unit="mm", ge=0.0,
+                                doc="radius of the side walls' edges at the extrusion gap "
+                                    "(clearance > 0)")
+    extrusion_limit: float = option(0.25, unit="mm", gt=0.0,
+                                    doc="a run stops once the seal has flowed this far past "
+                                        "a side wall into the extrusion gap (clearance > 0)")
 
 
 @dataclass(frozen=True)
@@ -339,6 +348,10 @@ def _check_seal_geometry(s, base):
     if gr.corner_radius >= min(0.5 * gr.width, space):
         raise SceneError(f"groove.corner_radius = {gr.corner_radius:g} mm must be below half "
                          f"the groove width and the groove depth {space:g} mm")
+    if gr.clearance > 0.0 and gr.clearance + gr.edge_radius + gr.corner_radius >= space:
+        raise SceneError(f"groove.clearance = {gr.clearance:g} mm with edge_radius "
+                         f"{gr.edge_radius:g} and corner_radius {gr.corner_radius:g} mm must "
+                         f"leave room in the groove depth {space:g} mm")
     if sl.corner_radius and sl.shape != "rectangle":
         raise SceneError(f"seal.corner_radius is the rectangle's (seal.shape is {sl.shape!r})")
     if sl.shape == "file":

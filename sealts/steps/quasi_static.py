@@ -41,10 +41,12 @@ class _LastTwo(Observer):
 
 def stabilised_problem(model, extra, hooks=()):
     """The Problem of the stabilised pseudo-time run: the seal, the walls, the ``extra``
-    terms (e.g. the pressure load), the viscous stabilisation, the rod-side guard and the
-    ``hooks`` (post-step terms: the front)."""
+    terms (e.g. the pressure load), the viscous stabilisation, the guards (rod side,
+    extrusion: the load's pressure in its message) and the ``hooks`` (post-step terms: the
+    front)."""
+    pressure = next((x.pressure for x in extra if hasattr(x, "pressure")), None)
     terms = (model.local_terms(model.walls() + list(extra), stab=True)
-             + [model.rod_side_guard()] + list(hooks))
+             + model.guards(pressure=pressure) + list(hooks))
     return model.problem(model.n, terms, dofs=model.dofs)
 
 
