@@ -10,6 +10,7 @@ uninterrupted run's to the last bit, wherever the signal fell. Only the wall tim
 moves the answer, naming the key.
 """
 import json
+import shutil
 import signal
 import subprocess
 import sys
@@ -27,9 +28,10 @@ def _sealts(*args, **kw):
                           capture_output=True, text=True, cwd=ROOT, timeout=600, **kw)
 
 
-def _interrupted(scene, out, after):
+def _interrupted(scene, out, after, launch=()):
     """Run the scene, SIGTERM it once its series passes t = after (s)."""
-    p = subprocess.Popen([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(out)],
+    p = subprocess.Popen([*launch, sys.executable, "-m", "sealts", "run", str(scene), "-o",
+                          str(out)],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
     series, t0 = out / "series.csv", time.monotonic()
     while p.poll() is None and time.monotonic() - t0 < 300:
@@ -97,3 +99,59 @@ def test_a_checkpoint_of_another_scene_is_refused(runs):
     assert r.returncode == 2 and "Traceback" not in r.stderr
     line, = r.stderr.strip().splitlines()
     assert "another scene" in line and "stroke.v_max = 500.0 there, 400.0 here" in line
+
+
+def test_a_finished_stroke_goes_on_to_a_later_end(runs, tmp_path):
+    """The steering keys (stroke.t_end, dt, rtol, stabilisation, output times, [petsc]) may
+    change on a restart: the finished cycle restarted with t_end = 11 s goes on from its
+    checkpoint at 10 s, keeps every row it had, and the summary names the change. A t_end
+    before the checkpoint is refused."""
+    d, _, text, *_ = runs
+    out = tmp_path / "a"
+    shutil.copytree(d / "a", out)
+    before = (out / "series.csv").read_text()
+    longer = tmp_path / "longer.toml"
+    longer.write_text(text.replace("t_end = 10.0", "t_end = 11.0"))
+    assert longer.read_text() != text
+    r = _sealts(longer, "--restart", out)
+    assert r.returncode == 0, r.stderr
+    s = json.loads((out / "summary.json").read_text())["stroke"]
+    assert s["restarted_at"] == 10.0 and s["t_end"] == 11.0
+    assert s["restart_changes"] == {"stroke.t_end": [10.0, 11.0]}
+    after = (out / "series.csv").read_text()
+    assert after.startswith(before) and len(after) > len(before)
+    assert float(after.splitlines()[-1].split(",")[0]) == 11.0
+    shorter = tmp_path / "shorter.toml"
+    shorter.write_text(text.replace("t_end = 10.0", "t_end = 9.0"))
+    r = _sealts(shorter, "--restart", out)
+    assert r.returncode == 2 and "past stroke.t_end = 9 s" in r.stderr
+
+
+MPIEXEC = shutil.which("mpiexec")
+
+
+@pytest.mark.mpi
+@pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
+def test_restart_on_two_ranks(runs, tmp_path):
+    """On two ranks (each assembling its own cells, rank 0 the boundary terms, the others
+    running their hooks: the friction anchors live on every rank) a stopped and restarted
+    cycle is the uninterrupted two-rank cycle to the last bit."""
+    _, scene, *_ = runs
+    mpi = (MPIEXEC, "-n", "2")
+    a, b = tmp_path / "a", tmp_path / "b"
+    r = subprocess.run([*mpi, sys.executable, "-m", "sealts", "run", str(scene), "-o", str(a)],
+                       capture_output=True, text=True, cwd=ROOT, timeout=600)
+    assert r.returncode == 0, r.stderr
+    _interrupted(scene, b, after=3.0, launch=mpi)
+    assert json.loads((b / "summary.json").read_text())["status"] == "interrupted"
+    r = subprocess.run([*mpi, sys.executable, "-m", "sealts", "run", str(scene), "--restart",
+                        str(b)], capture_output=True, text=True, cwd=ROOT, timeout=600)
+    assert r.returncode == 0, r.stderr
+    sa, sb = (json.loads((x / "summary.json").read_text()) for x in (a, b))
+    assert sb["ranks"] == 2 and sb["stroke"].pop("restarted_at") == 2.5
+    for s in (sa, sb):
+        s["stroke"].pop("wall_time_s")
+        for k in ("wall_time_s", "provenance"):
+            s.pop(k)
+    assert sb == sa
+    assert (b / "series.csv").read_text() == (a / "series.csv").read_text()

@@ -20,7 +20,7 @@ from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
 from ..problem.stroke_problem import StrokeProblem
 from ..solid.stresses import stress_cells
 from .base import Step
-from .stroke_checkpoint import PROFILES, Resumed, StrokeCheckpoint
+from .stroke_checkpoint import PROFILES, Resumed, StrokeCheckpoint, changes
 
 
 class StrokeColumns:
@@ -119,7 +119,9 @@ class Stroke(Step):
             writer.restore_profiles(PROFILES, back.profiles)
             integrals.transport, integrals.last = dict(back.transport), back.rows[-1]
             columns.last = (back.t, U)
-            say(f"stroke resumed at t = {back.t:.6g} s from {back.path}", force=True)
+            changed = changes(back.steering, scene)
+            say(f"stroke resumed at t = {back.t:.6g} s from {back.path}" + "".join(
+                f"; {k} {a} -> {b}" for k, (a, b) in changed.items()), force=True)
         outputs.append(StrokeCheckpoint(state, stroke, series, integrals, fields,
                                         wall_before=back.wall if back else 0.0))
         t_wall -= back.wall if back else 0.0
@@ -152,5 +154,7 @@ class Stroke(Step):
         }
         if back is not None:
             state.parts["stroke"]["restarted_at"] = back.t
+            if changed:
+                state.parts["stroke"]["restart_changes"] = changed
         state.u, state.t = stroke.displacement(U), st.t_end
         state.counters.add(c)

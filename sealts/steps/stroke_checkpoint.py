@@ -12,9 +12,11 @@ observer) writes OUTDIR/stroke_checkpoint.h5, whole (a temporary file renamed in
 * under ``stroke/``: U at the stop, the Problem's snapshot (the step TS takes next, the
   counts, the terms' histories: the friction anchors), the series rows so far, the
   transport per direction, the profiles and field frames written, the stroke's wall time;
-* the scene's fingerprint: every key but the name, description, output and start.
+* the scene's fingerprint: every key but the name, description, output and start, and
+  the steering keys (STEERING: t_end, dt, rtol, stabilisation, output times, [petsc]),
+  which a resumed run may change, e.g. to go on to a later t_end.
 
-A resumed run repeats the stroke's start (the film's row scales, the relaxed Prony stress:
+A resumed run with the same steering keys repeats the stroke's start (the film's row scales, the relaxed Prony stress:
 deterministic and a few Newton iterations), then takes U, the histories and the outputs from
 the checkpoint and goes on from its time with its step: its answer is the uninterrupted
 run's to round-off (tests/test_restart.py). series.csv and the profiles are rewritten from
@@ -32,14 +34,40 @@ from ..core import Observer
 NAME = "stroke_checkpoint.h5"
 VERSION = 1          # of the file's layout: a checkpoint of another layout is refused
 PROFILES = "stroke_profiles.csv"
-# scene keys a resumed run may change: they do not move the answer
+# scene sections a resumed run may change: they do not move the answer
 FREE = ("name", "description", "source", "output", "start")
+# keys that steer the stroke from where it stands on (section.key, or a whole section): a
+# resumed run may change them, e.g. go on to a later t_end, or with stroke.stabilisation
+# after a snap; the summary then lists what changed (``restart_changes``)
+STEERING = ("stroke.t_end", "stroke.dt", "stroke.rtol", "stroke.stabilisation",
+            "stroke.output_times", "petsc")
+
+
+def _split(scene):
+    """(the keys that decide the stroke's state, the steering keys) as dicts."""
+    d = {k: v for k, v in dataclasses.asdict(scene).items() if k not in FREE}
+    steer = {}
+    for key in STEERING:
+        sec, _, name = key.partition(".")
+        steer[key] = d[sec].pop(name) if name else d.pop(sec)
+    return d, steer
 
 
 def fingerprint(scene):
-    """The scene's keys that decide the stroke's answer, as a JSON text."""
-    d = dataclasses.asdict(scene)
-    return json.dumps({k: v for k, v in d.items() if k not in FREE}, sort_keys=True)
+    """The scene's keys that decide the stroke's state, as a JSON text."""
+    return json.dumps(_split(scene)[0], sort_keys=True)
+
+
+def steering(scene):
+    """The steering keys' values (STEERING), as a JSON text."""
+    return json.dumps(_split(scene)[1], sort_keys=True)
+
+
+def changes(before, scene):
+    """The steering keys a resumed run changed: key -> [checkpoint's value, now]."""
+    now = json.loads(steering(scene))          # as the checkpoint has them (lists)
+    was = json.loads(before)
+    return {k: [was.get(k), now[k]] for k in STEERING if was.get(k) != now[k]}
 
 
 def _first_difference(a, b, path=""):
@@ -78,6 +106,11 @@ def check_restart(outdir, scene):
     if version != VERSION:
         raise SceneError(f"--restart: {path} has layout {version}, this sealts reads "
                          f"{VERSION} (written by another version)")
+    with h5py.File(path, "r") as f:
+        t = float(f.attrs["stroke_t"])
+    if t > scene.stroke.t_end:
+        raise SceneError(f"--restart: {path} stands at t = {t:g} s, past stroke.t_end = "
+                         f"{scene.stroke.t_end:g} s")
     if theirs != fingerprint(scene):
         key, was, now = _first_difference(json.loads(theirs), json.loads(fingerprint(scene))
                                           ) or ("?", "?", "?")
@@ -115,6 +148,7 @@ class StrokeCheckpoint(Observer):
         self.run_before = json.dumps({"counters": dataclasses.asdict(state.counters),
                                       "parts": state.parts, "done": state.done})
         self.fingerprint = fingerprint(state.scene)
+        self.steering = steering(state.scene)
         self.stroke, self.series, self.integrals, self.fields = stroke, series, integrals, fields
         self.t_wall = time.perf_counter() - wall_before
 
@@ -135,7 +169,8 @@ class StrokeCheckpoint(Observer):
             for k, v in prof.items():
                 arrays[f"stroke/profiles/{i}/{k}"] = np.asarray(v)
         attrs.update(
-            version=VERSION, fingerprint=self.fingerprint, run_before=self.run_before,
+            version=VERSION, fingerprint=self.fingerprint, steering=self.steering,
+            run_before=self.run_before,
             stroke_t=snap["t"], stroke_dt=snap["dt"], stroke_last_dt=snap["last_dt"],
             stroke_step=snap["step"], stroke_newton=snap["newton"],
             stroke_counters=json.dumps(snap["counters"]),
@@ -177,6 +212,7 @@ class Resumed:
             self.frames = json.loads(a["stroke_fields"])
             self.wall = float(a["stroke_wall"])
             self.run_before = json.loads(a["run_before"])
+            self.steering = a["steering"]
 
     @property
     def t(self):
