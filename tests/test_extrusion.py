@@ -41,13 +41,18 @@ def edge_groove(X):
                          edge=(R_BORE, RHO))
 
 
-def fd_jacobian(problem, u, n, eps=1e-8):
+def assert_jacobian(term, u, eps=1e-8):
+    """The term's Jacobian against central differences of its residual, to 1e-6 of its
+    largest entry."""
+    n = u.size
+    problem = Problem(n, [term])
+    J = problem.jacobian_dense(0.0, u, np.zeros(n), 1.0)
     fd = np.zeros((n, n))
     for j in range(n):
         e = np.zeros(n)
         e[j] = eps
         fd[:, j] = (problem.residual(0.0, u + e, u) - problem.residual(0.0, u - e, u)) / (2 * eps)
-    return fd
+    assert np.abs(J - fd).max() <= 1e-6 * np.abs(J).max()
 
 
 def test_edge_contact_jacobian():
@@ -55,11 +60,7 @@ def test_edge_contact_jacobian():
     groove = edge_groove(X)
     n = 2 * X.shape[0]
     u = np.random.default_rng(3).uniform(-2e-5, 2e-5, n)
-    problem = Problem(n, [groove])
-    J = problem.jacobian_dense(0.0, u, np.zeros(n), 1.0)
-    fd = fd_jacobian(problem, u, n)
-    scale = np.abs(J).max()
-    assert np.abs(J - fd).max() <= 1e-6 * scale
+    assert_jacobian(groove, u)
     # every piece pressed: the wall pressure of every node but the free ones
     p = groove.node_pressures(0.0, u)
     assert (p > 0.5).sum() == X.shape[0] - 2 and (p < 1e-6).sum() == 2
@@ -121,11 +122,7 @@ def test_edge_friction_jacobian():
     fric.anchors = fric._disp(u) + rng.uniform(-3e-4, 3e-4, (X.shape[0], 2))
     p, _, tan, dtan, _ = groove_surfaces(groove, 0.0, u)
     assert np.abs(dtan).max() > 1.0                  # arcs turn their tangents
-    problem = Problem(n, [fric])
-    J = problem.jacobian_dense(0.0, u, np.zeros(n), 1.0)
-    fd = fd_jacobian(problem, u, n)
-    scale = np.abs(J).max()
-    assert np.abs(J - fd).max() <= 1e-6 * scale
+    assert_jacobian(fric, u)
     gamma = fric.slip(0.0, u)
     pressed = p > 0.5
     assert (np.abs(gamma[pressed]) < 1e-4).any() and (np.abs(gamma[pressed]) > 1e-4).any()
