@@ -123,7 +123,8 @@ class Stroke(Step):
             say(f"stroke resumed at t = {back.t:.6g} s from {back.path}" + "".join(
                 f"; {k} {a} -> {b}" for k, (a, b) in changed.items()), force=True)
         outputs.append(StrokeCheckpoint(state, stroke, series, integrals, fields,
-                                        wall_before=back.wall if back else 0.0))
+                                        wall_before=back.wall if back else 0.0,
+                                        resumed=back is not None))
         t_wall -= back.wall if back else 0.0
         U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, outputs,
                        resume=back.snapshot if back else None)

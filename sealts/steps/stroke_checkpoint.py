@@ -1,9 +1,10 @@
 """Checkpoints of the stroke, and the stroke resumed from one
 (``sealts run SCENE --restart OUTDIR``).
 
-At each of the stroke's stops (its output times, the velocity law's kinks and reversals,
-t_end), where TS restarts its integrator anyway, :class:`StrokeCheckpoint` (the stroke's last
-observer) writes OUTDIR/stroke_checkpoint.h5, whole (a temporary file renamed into place):
+At the stroke's start and each of its stops (its output times, the velocity law's kinks and
+reversals, t_end), where TS (re)starts its integrator anyway, :class:`StrokeCheckpoint` (the
+stroke's last observer) writes OUTDIR/stroke_checkpoint.h5, whole (a temporary file renamed
+into place):
 
 * the state the stroke started from, in ``state.h5``'s format (the displacement per node,
   X, the front's reach; p_in, p_crit, t, results), so :class:`sealts.steps.restart.Restart`
@@ -142,7 +143,8 @@ class StrokeCheckpoint(Observer):
     """Writes the checkpoint (module docstring) at each stop. ``state``: the RunState as the
     stroke began; ``parts``: the stroke's problem, series, transports and field series."""
 
-    def __init__(self, state, stroke, series, integrals, fields, wall_before=0.0):
+    def __init__(self, state, stroke, series, integrals, fields, wall_before=0.0,
+                 resumed=False):
         self.writer = state.writer
         self.before = state.file_data()
         self.run_before = json.dumps({"counters": dataclasses.asdict(state.counters),
@@ -151,6 +153,14 @@ class StrokeCheckpoint(Observer):
         self.steering = steering(state.scene)
         self.stroke, self.series, self.integrals, self.fields = stroke, series, integrals, fields
         self.t_wall = time.perf_counter() - wall_before
+        self.started = resumed          # a resumed run has its start's checkpoint
+
+    def accepted(self, t, u, info):
+        """The start (t = 0, its series row written) is a checkpoint too: a run that stops
+        before its first stop (a snap) can go on from there, e.g. with stabilisation."""
+        if not self.started:
+            self.started = True
+            self.stop(t, u)
 
     def stop(self, t, u):
         if not self.writer.root:
