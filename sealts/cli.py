@@ -182,7 +182,8 @@ def run(args, command="run"):
               f" N out, {st['peak_friction_instroke']:.4g} N in; min h "
               f"{st['h_min'] * 1e3:.4g} um  ({summary['wall_time_s']:.1f} s wall)")
         print(f"written: {out}/summary.json, series.csv, stroke_profiles.csv, "
-              "stroke_fields.xdmf/.h5 (time series), fields.xdmf/.h5, state.h5, PNG plots")
+              "stroke_fields.xdmf/.h5 (time series), fields.xdmf/.h5, state.h5, "
+              "stroke_checkpoint.h5 (for --restart), PNG plots")
     elif comm.getRank() == 0 and scene.output.progress and scene.model == "seal":
         r = summary["results"]
         print(f"{scene.name}: contact force {r['contact_force_total']:.6g} N "
