@@ -147,7 +147,7 @@ def run(args, command="run"):
     scene = load_scene(scene_path) if scene_path else default_scene()
     resume = None
     if restart is not None:
-        from .steps.stroke_checkpoint import check_restart
+        from .steps.run_checkpoint import check_restart
         resume = check_restart(restart, scene)
     out = Path(outdir) if outdir else Path("results") / (
         scene.name + ("_ihl" if command == "ihl" else ""))

@@ -123,7 +123,7 @@ RUN = [
     ("restart file not a checkpoint", seal(), {"stroke_checkpoint.h5": "EMPTY_H5"},
      ["--restart", "{dir}"], "is not a stroke checkpoint"),
     ("restart of a scene without a stroke", SLIDER, {}, ["--restart", "{dir}"],
-     "--restart continues a seal scene's stroke"),
+     "--restart continues a seal scene's hold or stroke"),
     ("restart into another directory", seal(), {}, ["--restart", "{dir}", "-o", "{dir}/x"],
      "names another directory"),
     ("restart without its directory", seal(), {}, ["--restart"], "--restart needs a directory"),

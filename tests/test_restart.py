@@ -189,3 +189,33 @@ def test_a_viscoelastic_stroke_extended_is_the_longer_run(tmp_path):
     assert b == a
     for name in ("series.csv", "stroke_profiles.csv"):
         assert (tmp_path / "part" / name).read_text() == (tmp_path / "whole" / name).read_text()
+
+
+def test_a_stopped_hold_restarted_is_the_uninterrupted_one(tmp_path):
+    """The viscoelastic hold (coarse O-ring, two Prony terms, 1 -> 5 MPa, held to 1000 s)
+    checkpoints at its start and at the decades of t; stopped by SIGTERM after t = 2 s and
+    restarted, it goes on from t = 1 s with the front where it stood (RelaxedFront's
+    history: the reach and its relaxation) and is the uninterrupted hold to the last bit,
+    its long-term check included."""
+    text = config_text("oring_hold", mesh={"h_contact": 0.1, "h_bulk": 0.4,
+                                           "cache": str(ROOT / "meshes")},
+                       viscoelastic={"prony": "custom", "prony_g": [0.5, 0.3],
+                                     "prony_tau": [0.01, 1.0], "t_min": 1e-3},
+                       hold={"t_end": 1e3}, output={"plot": False})
+    scene = tmp_path / "hold.toml"
+    scene.write_text(text)
+    a, b = tmp_path / "a", tmp_path / "b"
+    r = _sealts(scene, "-o", a)
+    assert r.returncode == 0, r.stderr
+    assert _interrupted(scene, b, after=2.0) == 143
+    r = _sealts(scene, "--restart", b)
+    assert r.returncode == 0, r.stderr
+    assert "hold resumed at t = 1 s" in r.stdout
+    sa, sb = (json.loads((x / "summary.json").read_text()) for x in (a, b))
+    assert sb["hold"].pop("restarted_at") == 1.0
+    for s in (sa, sb):
+        for k in ("wall_time_s", "provenance"):
+            s.pop(k)
+    assert sb == sa
+    for name in ("series.csv", "hold_profiles.csv"):
+        assert (b / name).read_text() == (a / name).read_text(), name

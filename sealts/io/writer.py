@@ -16,7 +16,7 @@ OUTDIR/
   series.png     transient runs: flows, leakage and time step over time
   manifest.json  the files this run wrote (rewritten as each new one appears)
   stroke_checkpoint.h5  seal scenes with a stroke: the state at the stroke's last stop, for
-                 ``sealts run SCENE --restart OUTDIR`` (sealts/steps/stroke_checkpoint.py)
+                 ``sealts run SCENE --restart OUTDIR`` (sealts/steps/run_checkpoint.py)
 
 A new run first deletes the files an earlier run's manifest lists (and, for directories of
 runs older than the manifest, the names above), except those the new scene reads (a state

@@ -59,6 +59,8 @@ class HoldProblem:
         if ves.prony_size:
             fields["prony"] = lay.field_dofs("prony")
         self.problem = model.problem(lay.n, terms, prefix="hold_", fields=fields, dofs=lay)
+        # checkpoints at the stops (sealts/steps/run_checkpoint.py): BDF restarts there
+        self.problem.restart_at_stops = True
 
     def node_contact_pressure(self, t, u):
         return node_contact_pressure(self.model.mesh.X.shape[0], self.groove, self.rod, t, u)
@@ -67,9 +69,13 @@ class HoldProblem:
         """The displacement-only vector of the SealModel's numbering."""
         return U[self.layout.udofs].ravel()
 
-    def run(self, t_end, dt0, rtol, stops=(), observers=()):
-        return self.problem.transient(self.U0, 0.0, t_end, dt0, stops=stops,
-                                      observers=observers, rtol=rtol, atol=1e-6)
+    def run(self, t_end, dt0, rtol, stops=(), observers=(), resume=None, U0=None):
+        """TS from t = 0 (or from a checkpoint: ``resume`` a Problem snapshot, ``U0`` its
+        state) to t_end."""
+        t0, dt0 = (0.0, dt0) if resume is None else (resume["t"], resume["dt"])
+        return self.problem.transient(self.U0 if U0 is None else U0, t0, t_end, dt0,
+                                      stops=stops, observers=observers, rtol=rtol, atol=1e-6,
+                                      resume=resume)
 
     def long_term_terms(self):
         """The long-term (hyperelastic) problem's boundary terms at the final pressure (rod,

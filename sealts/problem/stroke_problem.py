@@ -221,7 +221,7 @@ class StrokeProblem:
         # a stage's Newton solve is converged by the residual's tests or once its correction
         # is below 1e-3 of every unknown's error tolerance (sealts.problem.newton_test)
         self.problem.update_test = 1e-3
-        # checkpoints at the stops (sealts/steps/stroke_checkpoint.py): BDF restarts there
+        # checkpoints at the stops (sealts/steps/run_checkpoint.py): BDF restarts there
         self.problem.restart_at_stops = True
         # a step at TS's minimum size stops the run (Problem._check_min_step)
         self.problem.stop_at_min_step = True

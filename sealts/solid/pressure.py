@@ -261,11 +261,22 @@ class RelaxedFront(Term):
     positions at every step, each position's equilibrium pointing at the other, and the
     adaptive step collapsed. ``contact_pressure(t, u)`` as for :class:`AdvancingFront`."""
 
+    history_names = ("omega", "direction")
+
     def __init__(self, load, contact_pressure, max_advance=1.0):
         self.load, self.contact_pressure = load, contact_pressure
         self.max_advance = max_advance
         self.omega = [1.0, 1.0]
         self.direction = [0.0, 0.0]
+
+    def history(self):
+        """Its relaxation state and the fronts' reach (a checkpoint of the hold)."""
+        return {**super().history(), "reach": np.array(self.load.reach, float)}
+
+    def restore(self, history):
+        self.omega = [float(x) for x in history["omega"]]
+        self.direction = [float(x) for x in history["direction"]]
+        self.load.set_reach([float(x) for x in history["reach"]])
 
     def accepted(self, t, u):
         L = self.load

@@ -16,6 +16,9 @@ from ..problem.hold_problem import HoldProblem
 from .base import Step
 from .pseudo_time import PseudoTime
 from .quasi_static import quasi_static, settle_front
+from .run_checkpoint import Resumed, StepCheckpoint
+
+PROFILES = "hold_profiles.csv"
 
 
 class HoldColumns:
@@ -38,10 +41,18 @@ class HoldColumns:
 class Hold(Step):
     name = "viscoelastic hold"
 
+    def __init__(self, resume=None):
+        """``resume``: the path of a hold checkpoint to go on from
+        (:mod:`sealts.steps.run_checkpoint`)."""
+        self.resume = resume
+
     def run(self, state):
         model, scene, say = state.model, state.scene, state.say
         hold, ve = scene.hold, scene.viscoelastic
         p_in = scene.fluid.p_in
+        back = Resumed(self.resume) if self.resume else None
+        if back is not None:
+            back.restore_run(state)
         step = HoldProblem(model, state.u, state.load, p_in, hold.p_end, hold.t_ramp, ve,
                            hold.t_end)
         say(step.classes.describe(step.series, step.shift), force=True)
@@ -58,9 +69,19 @@ class Hold(Step):
         stops += [t for t in ve.temperature_times if 0.0 < t < t_end]  # kinks of A(theta(t))
         line = StepLine("hold step", [("rod force", "rod_force", 1.0, "N"),
                                       ("min h", "h_min", 1e3, "um")])
-        observers = [Series(state.writer, [HoldColumns(step), solver_columns], say, line),
-                     Profiles(state.writer, profile, "hold_profiles.csv")]
-        U = step.run(t_end, hold.dt, hold.rtol, stops=stops, observers=observers)
+        series = Series(state.writer, [HoldColumns(step), solver_columns], say, line)
+        observers = [series, Profiles(state.writer, profile, PROFILES)]
+        if back is not None:      # the outputs and the state as they stood at its stop
+            series.rows = list(back.rows)
+            state.writer.restore_series(back.rows)
+            state.writer.restore_profiles(PROFILES, back.profiles)
+            say(f"hold resumed at t = {back.t:.6g} s from {back.path}", force=True)
+        observers.append(StepCheckpoint(state, "hold", step.problem, series, PROFILES,
+                                        wall_before=back.wall if back else 0.0,
+                                        resumed=back is not None))
+        U = step.run(t_end, hold.dt, hold.rtol, stops=stops, observers=observers,
+                     resume=back.snapshot if back else None,
+                     U0=back.U if back else None)
         u = step.displacement(U)
         res = model.results(t_end, u, quasi_static=False)
         res["pressurised"] = state.results
@@ -78,6 +99,8 @@ class Hold(Step):
             "linear_iterations": c.linear,
             "long_term_check": long_term_check(step, U, t_end, state.protocol),
         }
+        if back is not None:
+            state.parts["hold"]["restarted_at"] = back.t
         state.u, state.t, state.results = u, t_end, res
         state.load = step.load
         state.counters.add(c)

@@ -2,7 +2,7 @@
 
     seal:  [Mount, Pressurise (p_in != 0), Checkpoint] or [Restart],
            then Hold (hold.p_end) or Stroke (stroke.velocity);
-           --restart OUTDIR: [Restart, Stroke] from OUTDIR's stroke checkpoint
+           --restart OUTDIR: [Restart, Hold or Stroke] from OUTDIR's checkpoint
     ihl:   [Mount, Pressurise (p_in != 0)] or [Restart], then Ihl
     film:  [SteadyFilm] or [TransientFilm]
 
@@ -36,9 +36,10 @@ def steps_1_2(scene):
 
 def steps_for(scene, command="run", resume=None):
     """The steps of a scene (``command``: "run" or "ihl"); ``resume``: a stroke checkpoint
-    to go on from (``--restart``; :func:`sealts.steps.stroke_checkpoint.check_restart`)."""
-    if resume is not None:
-        return [Restart(resume), Stroke(resume=resume)]
+    to go on from (``--restart``; :func:`sealts.steps.run_checkpoint.check_restart`)."""
+    if resume is not None:       # the checkpoint of the scene's hold or of its stroke
+        return [Restart(resume),
+                Hold(resume=resume) if scene.hold.p_end != 0.0 else Stroke(resume=resume)]
     if scene.model == "film":
         return [SteadyFilm() if scene.analysis.type == "steady" else TransientFilm()]
     steps = steps_1_2(scene)

@@ -20,7 +20,7 @@ from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
 from ..problem.stroke_problem import StrokeProblem
 from ..solid.stresses import stress_cells
 from .base import Step
-from .stroke_checkpoint import PROFILES, Resumed, StrokeCheckpoint, changes
+from .run_checkpoint import PROFILES, Resumed, StepCheckpoint, changes
 
 
 class StrokeColumns:
@@ -79,7 +79,7 @@ class Stroke(Step):
 
     def __init__(self, resume=None):
         """``resume``: the path of a stroke checkpoint to go on from
-        (:mod:`sealts.steps.stroke_checkpoint`)."""
+        (:mod:`sealts.steps.run_checkpoint`)."""
         self.resume = resume
 
     def run(self, state):
@@ -122,9 +122,9 @@ class Stroke(Step):
             changed = changes(back.steering, scene)
             say(f"stroke resumed at t = {back.t:.6g} s from {back.path}" + "".join(
                 f"; {k} {a} -> {b}" for k, (a, b) in changed.items()), force=True)
-        outputs.append(StrokeCheckpoint(state, stroke, series, integrals, fields,
-                                        wall_before=back.wall if back else 0.0,
-                                        resumed=back is not None))
+        outputs.append(StepCheckpoint(state, "stroke", stroke.problem, series, PROFILES,
+                                      integrals, fields, wall_before=back.wall if back else 0.0,
+                                      resumed=back is not None))
         t_wall -= back.wall if back else 0.0
         U = stroke.run(U, st.t_end, st.dt, st.rtol, st.output_times, outputs,
                        resume=back.snapshot if back else None)
