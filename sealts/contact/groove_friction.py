@@ -97,29 +97,30 @@ def groove_surfaces(groove, t, u):
         p[0, idx], p[wall, idx] = pc, 0.0
         dp[0, idx, 0], dp[0, idx, 1] = -dpc * nr, -dpc * nz
         dp[wall, idx] = 0.0
-        tr, tz = -nz, nr
-        tan[0, idx, 0], tan[0, idx, 1] = tr, tz
-        # dt/dx = (R - t n^T) / d, R = [[0, -1], [1, 0]]
-        dtan[0, idx, 0, 0] = -tr * nr / d
-        dtan[0, idx, 0, 1] = (-1.0 - tr * nz) / d
-        dtan[0, idx, 1, 0] = (1.0 - tz * nr) / d
-        dtan[0, idx, 1, 1] = -tz * nz / d
+        tan[0, idx], dtan[0, idx] = _turning(nr, nz, 1.0 / d)
         region[idx] = wall
     for side, idx, gap, nr, nz, d in wall_edges(r, z, za, zb, g.edge):
         pe, dpe = softplus_penalty(gap, k, dl)
         wall = 1 if side < 0 else 2                     # the side wall its edge replaces
         p[wall, idx] = pe
         dp[wall, idx, 0], dp[wall, idx, 1] = dpe * nr, dpe * nz
-        tr, tz = -nz, nr                                # e_r on the face, -e_z on the bore
-        tan[wall, idx, 0], tan[wall, idx, 1] = tr, tz
-        dtan[wall, idx] = 0.0
-        on = d > 0.0                                    # the arc turns its tangent
-        inv = np.divide(1.0, d, out=np.zeros_like(d), where=on)
-        dtan[wall, idx, 0, 0] = -tr * nr * inv
-        dtan[wall, idx, 0, 1] = (-1.0 - tr * nz) * inv
-        dtan[wall, idx, 1, 0] = (1.0 - tz * nr) * inv
-        dtan[wall, idx, 1, 1] = -tz * nz * inv
+        # e_r on the face, -e_z on the bore; only the arc (d > 0) turns its tangent
+        inv = np.divide(1.0, d, out=np.zeros_like(d), where=d > 0.0)
+        tan[wall, idx], dtan[wall, idx] = _turning(nr, nz, inv)
     return p, dp, tan, dtan, region
+
+
+def _turning(nr, nz, inv):
+    """The tangent t = R n (R the rotation by +90 degrees) of a surface with unit normal n,
+    and dt/dx = (R - t n^T) / d on an arc of radius d (``inv`` = 1/d; 0 on a flat piece):
+    arrays (m, 2) and (m, 2, 2)."""
+    tr, tz = -nz, nr
+    dt = np.empty(nr.shape + (2, 2))
+    dt[:, 0, 0] = -tr * nr * inv
+    dt[:, 0, 1] = (-1.0 - tr * nz) * inv
+    dt[:, 1, 0] = (1.0 - tz * nr) * inv
+    dt[:, 1, 1] = -tz * nz * inv
+    return np.stack([tr, tz], axis=1), dt
 
 
 class GrooveFriction(Term):
