@@ -4,9 +4,10 @@ Also ``python -m sealts``. Subcommands:
 
   run    run a scene (the embedded default scene without one); every option that sealts does
          not know goes to PETSc (-ts_type, -snes_monitor, -pc_type, -log_view, -help, ...);
-         --restart OUTDIR goes on with the stroke of the run in OUTDIR (interrupted or
-         failed) from its last checkpoint (a stop of the stroke: output times, reversals),
-         with the same scene
+         --restart OUTDIR goes on with the stroke or the hold of the run in OUTDIR
+         (interrupted, failed or finished) from its last checkpoint (the step's start or a
+         stop: output times, reversals, decades of the hold), with the same scene (its
+         steering keys may change: sealts/steps/run_checkpoint.py)
   ihl    inverse-hydrodynamic estimate of a seal scene's film and leakage per stroke, from
          its dry mounted (and pressurised) contact pressure at rod.velocity
   check  validate a scene file and print nothing else
