@@ -36,7 +36,9 @@ def test_file_mesh_mounts_like_the_builtin_rectangle(tmp_path):
     two different meshes; the built-in rectangle's own 0.1 -> 0.05 mm change is below it)."""
     geo = rectangle_geo(tmp_path / "ring.geo", 0.2)
     forces = []
-    for seal in ({"shape": "file", "mesh_file": str(geo)}, {"shape": "rectangle"}):
+    # both sharp-cornered (the shipped ring rounds its rod-side corners)
+    for seal in ({"shape": "file", "mesh_file": str(geo), "corner_radius": 0.0},
+                 {"shape": "rectangle", "corner_radius": 0.0}):
         s = scene("rect_ring_mount", seal=seal, groove={"corner_radius": 0.0},
                   mesh={"h_contact": 0.1, "h_bulk": 0.1, "cache": str(tmp_path)})
         forces.append(prepare(s).results["contact_force_total"])
