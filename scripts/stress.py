@@ -18,8 +18,9 @@ ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction
 table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
 flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
 ``stabilisation`` 10 and 40 MPa and the smooth rod with stroke.stabilisation = 1e-3;
-``clearance`` extrusion gaps of 0.02, 0.05 and 0.1 mm at 1, 5 and 10 MPa. Not yet: back
-pressure (not modelled), a 15 h hold, the full pressure x clearance x amplitude grid.
+``clearance`` extrusion gaps of 0.02, 0.05 and 0.1 mm at 1, 5 and 10 MPa; ``back`` a back
+pressure p_out (p_in = p_out = 1 MPa, 10 against 5 MPa, and 1 MPa on the atmosphere side
+alone). Not yet: a 15 h hold, the full pressure x clearance x amplitude grid.
 Add a factor as one entry of FACTORS.
 """
 import argparse
@@ -80,6 +81,8 @@ FACTORS = {
                                                           "fluid": {"p_in": p}})
                   for c, p in ((0.1, 1.0), (0.1, 5.0), (0.02, 10.0), (0.05, 10.0),
                                (0.1, 10.0))],
+    "back": [(f"p_in {a:g} / p_out {b:g} MPa", {"fluid": {"p_in": a, "p_out": b}})
+             for a, b in ((1.0, 1.0), (10.0, 5.0), (0.0, 1.0))],
     "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
              ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
 }
@@ -130,6 +133,8 @@ def run_case(name, overrides, mesh, timeout, work):
     st = s.get("stroke", {})
     if rc != 0:
         row["why"] = s.get("error", err[0])[:320]
+    elif st.get("snapped_at") is not None:
+        row["why"] = f"snapped at t = {st['snapped_at']:.4g} s, stabilised from there"
     row.update({"accepted": st.get("steps_accepted", ""), "rejected": st.get("steps_rejected", ""),
                 "Newton": st.get("newton_iterations", ""),
                 "net mm^3": st.get("leakage_out", ""),

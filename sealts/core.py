@@ -18,7 +18,11 @@ class SolveError(RuntimeError):
 
 class StepTooSmall(SolveError):
     """TS's steps stuck at their minimum size: the solution runs away faster than any step
-    (:meth:`sealts.problem.Problem._check_min_step`)."""
+    (:meth:`sealts.problem.Problem._check_min_step`); ``t`` where."""
+
+    def __init__(self, message, t=None):
+        super().__init__(message)
+        self.t = t
 
 
 def of_time(x):

@@ -69,7 +69,7 @@ CHECK = [
     ("film too large for the machine", film(film={"elements": 2000000000}), {},
      "film.elements"),
     ("below vacuum", seal(fluid={"p_in": -0.5}), {}, "below vacuum"),
-    ("back pressure on a seal", seal(fluid={"p_out": 1.0}), {}, "fluid.p_out"),
+    ("back pressure below vacuum", seal(fluid={"p_out": -0.2}), {}, "fluid.p_out"),
     ("output time after the end", seal(stroke={"output_times": [20.0]}), {},
      "stroke.output_times has 20 s"),
     ("negative friction", seal(asperity={"mu_s": -0.1}), {}, "asperity.mu_s must be >= 0"),

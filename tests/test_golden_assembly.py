@@ -76,9 +76,13 @@ def check(g, name, problem):
 
 
 def pressurised_load(state, g):
+    """The stored wetting on today's load. The data's reach counts edges from 8a88570's
+    entry, the pressure side's node of smallest z; today's fluid enters at its node nearest
+    the rod: the same wetted edges, counted from there."""
     from sealts.steps.pressurise import Pressurise
     load = Pressurise.pressure_load(state)
-    load.set_reach(g["reach"])
+    X, side = state.model.mesh.X, state.model.mesh.nodes("pressure_side")
+    load.set_reach(load.recount(g["reach"], [side[np.argmin(X[side, 1])]]))
     return load
 
 

@@ -330,7 +330,7 @@ def test_relaxed_front_damps_an_overshooting_front():
     class Overshooting:
         reach = [5.0, 2.0]
 
-        def target_reach(self, pc, p):
+        def target_reach(self, pc, t):
             return [5.5 - 1.5 * (self.reach[0] - 5.5), 2.0]
 
         def set_reach(self, reach):

@@ -8,6 +8,7 @@ stops. With c = 1e-3 MPa s/mm^2 the snap takes a finite time and the run goes on
 answers do not depend on c where it runs (benchmarks/stress.md: c = 3e-4 and 1e-3 MPa s/mm^2
 agree to 0.02 % at 10 MPa; at 1 MPa c = 1e-3 moves the coarse cycle's net leakage by
 0.002 %)."""
+import re
 import subprocess
 import sys
 
@@ -40,7 +41,21 @@ def test_stabilisation_jacobian(tmp_path):
     assert stroke.node_volume.sum() == pytest.approx(float(model.solid.W.sum()), rel=1e-12)
 
 
-STABILISED = {}       # the stabilised run's summary and series, for the restarted one
+STABILISED = {}       # the stabilised run's summary, for the restarted and the snapped ones
+MODES = {"from the start": {"stabilisation": 1e-3},
+         "off": {"stabilisation": 0.0, "snap_stabilisation": 0.0},
+         "at the snap": {}}          # the defaults: stroke.snap_stabilisation = 1e-3
+
+
+def _same_stroke(st, *extra):
+    """The stroke summary equals the stabilised run's but for wall time and the keys named."""
+    if not STABILISED:       # the stabilised fixture runs first (params order)
+        pytest.skip("needs the stabilised run")
+    a, b = dict(STABILISED["stroke"]), dict(st)
+    for s in (a, b):
+        for k in ("wall_time_s", "snapped_at") + extra:
+            s.pop(k, None)
+    assert b == a
 
 
 def _restarted_with_the_stabilisation(res):
@@ -50,7 +65,8 @@ def _restarted_with_the_stabilisation(res):
     out = res.dir
     scene = out.parent / "scene.toml"
     text = scene.read_text()
-    scene.write_text(text.replace("stabilisation = 0.0", "stabilisation = 0.001"))
+    scene.write_text(re.sub(r"^stabilisation = 0\.0\b", "stabilisation = 0.001", text,
+                            flags=re.M))
     assert scene.read_text() != text
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "--restart",
                         str(out)], capture_output=True, text=True, cwd=ROOT)
@@ -59,15 +75,10 @@ def _restarted_with_the_stabilisation(res):
     st = again.summary["stroke"]
     assert st["restarted_at"] == 0.0
     assert st["restart_changes"] == {"stroke.stabilisation": [0.0, 0.001]}
-    if STABILISED:           # the stabilised fixture ran first (params order)
-        a, b = STABILISED["stroke"], dict(st)
-        for s in (a, b):
-            for k in ("wall_time_s", "restarted_at", "restart_changes"):
-                s.pop(k, None)
-        assert b == a
+    _same_stroke(st, "restarted_at", "restart_changes")
 
 
-@pytest.fixture(scope="module", params=[1e-3, 0.0])
+@pytest.fixture(scope="module", params=list(MODES))
 def snap_10mpa(request, tmp_path_factory):
     """The O-ring on the 0.05 / 0.2 mesh at 10 MPa, the first 0.05 s of the paper's sine."""
     d = tmp_path_factory.mktemp("snap")
@@ -75,7 +86,7 @@ def snap_10mpa(request, tmp_path_factory):
     scene.write_text(config_text(
         "oring_stroke", mesh={"h_contact": 0.05, "h_bulk": 0.2, "cache": str(d / "mesh")},
         fluid={"p_in": 10.0}, stroke={"t_end": 0.05, "output_times": [],
-                                      "stabilisation": request.param},
+                                      **MODES[request.param]},
         output={"plot": False, "progress": False}))
     r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(d / "out")],
                        capture_output=True, text=True, cwd=ROOT)
@@ -83,17 +94,24 @@ def snap_10mpa(request, tmp_path_factory):
 
 
 def test_a_snap_runs_with_the_stabilisation_and_stops_without(snap_10mpa):
-    c, r, res = snap_10mpa
-    if c == 0.0:
+    mode, r, res = snap_10mpa
+    if mode == "off":
         assert r.returncode == 3
         assert "time step at its minimum" in r.stderr and "t = 0.02" in r.stderr
-        assert "stroke.stabilisation = 1e-3" in r.stderr      # the way out, named
+        assert "stroke.snap_stabilisation = 1e-3" in r.stderr      # the way out, named
         _restarted_with_the_stabilisation(res)
         return
     assert r.returncode == 0, r.stderr[-1500:]
     st = res.summary["stroke"]
-    STABILISED["stroke"] = dict(st)
     assert res.series["t"][-1] == pytest.approx(0.05)
+    if mode == "at the snap":
+        # it snapped at t = 0.021 s and went back to the last stop, here the start, with
+        # c = 1e-3 from there: the stabilised run's stroke to the last bit
+        assert 0.02 < st["snapped_at"] < 0.022 and st["snap_stabilised_from"] == 0.0
+        _same_stroke(st, "snap_stabilised_from")
+        return
+    STABILISED["stroke"] = dict(st)
+    assert st["snapped_at"] is None
     # its force (sum of |c V_i u_i'|, the seal's drift with the rod included) stays a small
     # part of the load the seal carries: 0.11 % at most here, measured
     assert 0.0 < st["stabilisation_share"] < 0.01

@@ -14,7 +14,7 @@ import copy
 import numpy as np
 
 from ..contact.rigid import RodContact, node_contact_pressure
-from ..solid.pressure import PressureLoad, RelaxedFront
+from ..solid.pressure import RelaxedFront
 from ..solid.viscoelastic_solid import ViscoelasticSolid
 from .seal_model import ramp
 
@@ -38,12 +38,10 @@ class HoldProblem:
         self.rod = RodContact(self.side, model.law)
         self.groove = copy.copy(model.groove)
         self.groove.r_bottom = lambda t: model.r_g_final
-        self.load = PressureLoad(X, mesh.conn,
-                                 lambda t: p_from + (p_to - p_from) * ramp(t / t_ramp),
-                                 model.axisym, load.edges[load.start, 0], udofs=lay.udofs,
-                                 p_crit=load.p_crit)
-        self.load.set_reach(load.reach)
-        self.load.mark_exit(mesh.edges["atmosphere_side"])
+        # step 2's wetting, with p_in ramped from p_from to p_to (a back pressure stays)
+        self.load = load.rebuilt(
+            [lambda t: p_from + (p_to - p_from) * ramp(t / t_ramp)] + load.pressures[1:],
+            udofs=lay.udofs)
         # serial start vector; each rank fills the internal variables of its own cells
         self.U0 = np.zeros(lay.n)
         self.U0[lay.udofs] = u0[model.udofs]
@@ -80,6 +78,5 @@ class HoldProblem:
     def long_term_terms(self):
         """The long-term (hyperelastic) problem's boundary terms at the final pressure (rod,
         groove, the load, the gauge), and that load: a copy of the hold's held at p_to."""
-        load = copy.copy(self.load)
-        load.pressure = lambda t: self.p_to
+        load = self.load.rebuilt([lambda t: self.p_to] + self.load.pressures[1:])
         return [self.rod, self.groove, load] + self.gauge_terms, load

@@ -447,8 +447,8 @@ class Problem:
             what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
             name = f"; the fastest change: {what}"
         raise StepTooSmall(f"time step at its minimum ({self._dt_min:.3g} s) at t = {t:.6g} s: "
-                         "the solution changes faster than the error tolerance can follow "
-                         f"(a step this small is accepted unchecked){name}")
+                           "the solution changes faster than the error tolerance can follow "
+                           f"(a step this small is accepted unchecked){name}", t=t)
 
     def snapshot(self):
         """At a stop of :meth:`transient` (from an observer's ``stop``): what a run resumed
@@ -466,9 +466,9 @@ class Problem:
                 "step": ts.getStepNumber() + self._offset[0],
                 "newton": ts.getSNESIterations() + self._offset[1],
                 "history": {str(k): term.history()
-                            for k, term in enumerate(self._with_history())}}
+                            for k, term in enumerate(self.history_terms())}}
 
-    def _with_history(self):
+    def history_terms(self):
         """The terms that carry a history, in order (the same on every rank: the ranks
         that do not assemble a boundary term run its hook, :class:`HookOnly`)."""
         return [term for term in self.terms if term.history_names]
@@ -498,7 +498,7 @@ class Problem:
         self._dt_min = None
         self._offset = (0, 0)
         if resume is not None:
-            with_history = self._with_history()
+            with_history = self.history_terms()
             for k, history in resume["history"].items():
                 with_history[int(k)].restore(history)
             self.counters = Counters(**{k: int(v) for k, v in resume["counters"].items()})

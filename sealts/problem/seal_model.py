@@ -179,17 +179,34 @@ class SealModel:
     def node_contact_pressure(self, t, u):
         return node_contact_pressure(self.mesh.X.shape[0], self.groove, self.rod, t, u)
 
-    def pressure_load(self, pressure, p_crit):
-        """The fluid pressure ``pressure(t)`` (MPa) on the free surface, entering at the
-        pressure side's most exposed node, nothing wetted yet
-        (:class:`sealts.solid.pressure.PressureLoad`)."""
+    def pressure_load(self, pressure, p_crit, back=None):
+        """The fluid pressure ``pressure(t)`` (MPa) on the free surface, nothing wetted yet
+        (:class:`sealts.solid.pressure.PressureLoad`), entering where it comes in through
+        the rod clearance: at the pressure side's node nearest the rod. With ``back(t)``, a
+        back pressure entering at the atmosphere side's node nearest the rod too
+        (:class:`sealts.solid.fluid_loads.FluidLoads`).
+
+        (The entry was the pressure side's most exposed node, its smallest z, until a back
+        pressure came: a seal held against both walls has that node in the wall's contact,
+        and the fluid at p_in = p_out then had no consistent front. Pushed off the wall by
+        p_in alone, the seal settles to the same wetted set from either entry: the coarse
+        O-ring at 1 MPa to 3e-9 mm.)"""
+        from ..solid.fluid_loads import FluidLoads
         from ..solid.pressure import PressureLoad
-        chain_p = self.mesh.nodes("pressure_side")
-        start = chain_p[np.argmin(self.mesh.X[chain_p, 1])]
-        load = PressureLoad(self.mesh.X, self.mesh.conn, pressure, self.axisym, start,
-                            udofs=self.udofs, p_crit=p_crit)
-        load.mark_exit(self.mesh.edges["atmosphere_side"])
-        return load
+        X, edges = self.mesh.X, self.mesh.edges
+
+        def fluid(p, side, exit_):
+            nodes = self.mesh.nodes(side)
+            entry = nodes[np.argmin(X[nodes, 0])]     # the side's node nearest the rod
+            load = PressureLoad(X, self.mesh.conn, p, self.axisym, entry, udofs=self.udofs,
+                                p_crit=p_crit)
+            load.mark_exit(edges[exit_])
+            return load
+
+        load = fluid(pressure, "pressure_side", "atmosphere_side")
+        if back is None:
+            return load
+        return FluidLoads([load, fluid(back, "atmosphere_side", "pressure_side")])
 
     def pressure_resultant(self, load, t, u):
         """Total (radial, axial) force of the fluid pressure on the seal (N)."""

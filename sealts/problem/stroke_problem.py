@@ -44,7 +44,7 @@ after the Section's fields.
   ``rod_slip`` field, integrated by TS. ``friction_groove`` in the series is the walls'
   axial friction force on the seal.
 
-* viscous stabilisation (``stroke.stabilisation``, c in MPa s/mm^2, off by default):
+* viscous stabilisation (``stroke.stabilisation``, c in MPa s/mm^2, 0 by default):
   :class:`sealts.solid.stabilisation.ViscousStabilisation`, F += c V_i u_i' on every
   node's displacement rows (V_i its lumped volume), each rank over the nodes it owns. The
   quasi-static seal has no rate term of its own: where its equilibrium path folds (the
@@ -52,9 +52,11 @@ after the Section's fields.
   solution runs away in finite time and no step is small enough. The stabilisation gives
   the snap a finite speed. Its force c V_i u_i' is absolute, so it is not negligible where
   the seal's own loads are small or it drifts as a whole (the rigid-limit scene: 2 % of
-  the film load); hence opt-in, with its largest share of the normal load reported as
-  ``stabilisation_share`` (benchmarks/stress.md has the answers' independence of c at
-  10 MPa).
+  the film load); hence not from the start by default, but once the seal has snapped
+  (``stroke.snap_stabilisation``, :class:`sealts.solid.stabilisation.SnapStabilisation`:
+  the stroke step goes back to its last stop and on with c from there), with its largest
+  share of the normal load reported as ``stabilisation_share`` (benchmarks/stress.md has
+  the answers' independence of c at 10 MPa).
 
 * error control: the local error in the max norm over the unknowns (``Problem.ts_defaults``,
   docs/design.md); each unknown's tolerance in its own unit, the leakage volumes' absolute
@@ -83,8 +85,7 @@ from ..contact.slip_state_friction import SlipStateFriction
 from ..core import Constraints, StepTooSmall
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
-from ..solid.pressure import PressureLoad
-from ..solid.stabilisation import ViscousStabilisation
+from ..solid.stabilisation import SnapStabilisation
 from ..solid.term import SolidTerm
 from ..solid.viscoelastic_solid import ViscoelasticSolid
 from .film_model import flow_factors_of
@@ -177,20 +178,18 @@ class StrokeProblem:
         old = load
         if old is not None:
             # step 2's wetting, without the rod side when the film carries it
-            self.load = PressureLoad(X, mesh.conn, lambda t: fl.p_in, axisym,
-                                     old.edges[old.start, 0], udofs=ud, p_crit=old.p_crit)
             rod_edges = {tuple(sorted(e)) for e in mesh.edges["rod_side"]} if wet else set()
             on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges], bool)
-            self.load.s0 = np.where(on_rod, 0.0, old.s0)
-            self.load.s1 = np.where(on_rod, 0.0, old.s1)
+            self.load = old.rebuilt([lambda t: fl.p_in, lambda t: fl.p_out][:len(old.pressures)],
+                                    udofs=ud, dry=on_rod)
         # the viscous stabilisation, over this rank's own nodes (lumped volumes)
-        self.stab = None
-        c = scene.stroke.stabilisation
+        c, c_snap = scene.stroke.stabilisation, scene.stroke.snap_stabilisation
         self.node_volume = model.stab.m.reshape(-1, 2)[:, 0]
-        if c > 0.0:
-            own = model.partition.owned_nodes
-            self.stab = ViscousStabilisation(lay.udofs_local[own].ravel(),
-                                             np.repeat(self.node_volume[own], 2), c)
+        # always a term (c = 0 adds nothing), so that a checkpoint's histories line up
+        # with a resumed run's whatever c either has
+        own = model.partition.owned_nodes
+        self.stab = SnapStabilisation(lay.udofs_local[own].ravel(),
+                                      np.repeat(self.node_volume[own], 2), c, c_snap)
         self.U0 = np.zeros(self.n)
         self.U0[ud] = u0[model.udofs]
         fields = None
@@ -223,7 +222,8 @@ class StrokeProblem:
         self.problem.update_test = 1e-3
         # checkpoints at the stops (sealts/steps/run_checkpoint.py): BDF restarts there
         self.problem.restart_at_stops = True
-        # a step at TS's minimum size stops the run (Problem._check_min_step)
+        # a step at TS's minimum size stops the run (Problem._check_min_step); the stroke
+        # step then goes back to its last stop with the snap stabilisation, once
         self.problem.stop_at_min_step = True
 
     def _terms(self, solid, prony, with_leakage):
@@ -233,7 +233,7 @@ class StrokeProblem:
                                 self.leakage if with_leakage else None, self.friction,
                                 self.groove_friction, self.load,
                                 self.work if with_leakage else None) if t is not None]
-        stab = [self.stab] if (self.stab is not None and with_leakage) else []
+        stab = [self.stab] if with_leakage else []
         return (self.guards + [solid] + stab + ([prony] if prony is not None else [])
                 + self.layout.on_root(boundary))
 
@@ -345,7 +345,7 @@ class StrokeProblem:
         groove = gf.axial(t, U) if gf is not None else 0.0
         work = float(U[self.work.wd]) if self.work is not None else 0.0
         f_stab = 0.0
-        if self.stab is not None and Udot is not None:
+        if Udot is not None:
             ud = self.layout.udofs
             f_stab = float(np.abs(self.stab.c * self.node_volume[:, None] * Udot[ud]).sum())
         out = {"v": self.motion.v(t), "friction_fluid": shear, "friction_solid": solid,
@@ -415,8 +415,13 @@ class StrokeProblem:
                                           observers=observers, rtol=rtol, atol=atol,
                                           resume=resume)
         except StepTooSmall as e:
-            if self.stab is None:
+            if self.stab.c_snap <= self.stab.c_base:
                 raise StepTooSmall(f"{e}; if the seal snaps there (a fold of its quasi-static "
-                                   "equilibrium), stroke.stabilisation = 1e-3 gives the snap "
-                                   "a finite speed") from None
+                                   "equilibrium), stroke.snap_stabilisation = 1e-3 (above "
+                                   "stroke.stabilisation) gives the snap a finite speed",
+                                   t=e.t) from None
+            if self.stab.snapped_at >= 0.0:
+                raise StepTooSmall(f"{e}; stuck again with the snap stabilisation (c = "
+                                   f"{self.stab.c:g} MPa s/mm^2, for a snap at t = "
+                                   f"{self.stab.snapped_at:.6g} s)", t=e.t) from None
             raise

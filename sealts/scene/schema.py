@@ -46,7 +46,8 @@ class Gap:
 class Fluid:
     viscosity: float = option(1e-8, unit="MPa s", gt=0.0, doc="dynamic viscosity eta")
     p_in: float = option(0.0, unit="MPa", doc="gauge pressure at y = 0 (sealed, pressurised side)")
-    p_out: float = option(0.0, unit="MPa", doc="gauge pressure at y = l (atmosphere side)")
+    p_out: float = option(0.0, unit="MPa", doc="gauge pressure at y = l (atmosphere side); on "
+                                                "a seal a back pressure (double-acting)")
     p_crit: float = option(0.1, unit="MPa", ge=0.0,
                            doc="model = seal: pressure penetration stops where the seal "
                                "presses on a wall by more than the fluid pressure + p_crit")
@@ -245,6 +246,11 @@ class Stroke:
                                       "equilibrium path) a finite speed; 1e-3 carries the "
                                       "10 MPa O-ring through its snap; its largest share of "
                                       "the normal load is the summary's stabilisation_share")
+    snap_stabilisation: float = option(1e-3, unit="MPa s/mm^2", ge=0.0,
+                                       doc="c from the first snap on (steps stuck at TS's "
+                                           "minimum; the summary's snapped_at), for the rest "
+                                           "of the run, if above stroke.stabilisation; 0: "
+                                           "a snap stops the run")
 
 
 @dataclass(frozen=True)
@@ -504,14 +510,11 @@ def _check_consistency(s, base):
         _check_viscoelastic(s)
         _check_stroke(s, base)
         from ..units import P_VACUUM
-        for key, p in (("fluid.p_in", s.fluid.p_in), ("hold.p_end", s.hold.p_end)):
+        for key, p in (("fluid.p_in", s.fluid.p_in), ("fluid.p_out", s.fluid.p_out),
+                       ("hold.p_end", s.hold.p_end)):
             if p < P_VACUUM:
                 raise SceneError(f"{key} = {p:g} MPa is below vacuum ({P_VACUUM:g} MPa): "
                                  "pressures are gauge pressures, above the atmosphere's")
-        if s.fluid.p_out != 0.0:
-            raise SceneError(f"fluid.p_out = {s.fluid.p_out:g} MPa: a seal scene's "
-                             "atmosphere side is at 0 MPa (its free surface is not loaded "
-                             "by p_out; not modelled yet)")
         if s.start.state:
             _check_file("start.state", s.start.state, base)
         return

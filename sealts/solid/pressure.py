@@ -9,9 +9,9 @@ outward normal times length is (dz, -dr), the consistent nodal forces are
 
 (2 pi int N r dl over a straight edge), with their exact Jacobian (the load stiffness).
 
-Pressure penetration: the wetted set starts at the most exposed node of the pressure side
-(its smallest z) and follows the boundary loop in both directions up to the first node where
-the seal seals: where its normal traction on the wall, sigma_n, exceeds the fluid pressure p
+Pressure penetration: the wetted set starts where the fluid comes in (the pressure side's
+node nearest the rod, ``SealModel.pressure_load``) and follows the boundary loop in both
+directions up to the first node where the seal seals: where its normal traction on the wall, sigma_n, exceeds the fluid pressure p
 by more than p_crit. The wall's contact pressure p_c (groove penalty or rod asperity law) is
 only the solid share of sigma_n: on a node whose load is wetted by the share phi (1 wet, 0
 dry, a fraction next to the front) the fluid already presses with phi p, so
@@ -39,6 +39,8 @@ called by the TS monitor), so each Newton solve sees a fixed, smooth load. While
 rises the front may only advance (``recede=False``); the drivers then settle it at the final
 pressure (front update and static solve in turn, until it stops moving).
 """
+import copy
+
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
@@ -71,8 +73,12 @@ class PressureLoad(Term):
         self.s0 = np.zeros(self.m)       # wetted part [s0, s1] of each edge, s from a to b
         self.s1 = np.ones(self.m)
         self.reach = None                # the two fronts' positions (edges from the start)
+        self._number(vertex_dofs(X.shape[0]) if udofs is None else udofs)
+
+    def _number(self, udofs):
+        """The edges' dofs and COO pattern in the numbering ``udofs``."""
         a, b = self.edges[:, 0], self.edges[:, 1]
-        self.udofs = vertex_dofs(X.shape[0]) if udofs is None else udofs
+        self.udofs = udofs
         da, db = self.udofs[a], self.udofs[b]
         self.dofs = np.concatenate([da, db], 1)            # (m, 4): ra, za, rb, zb
         self.rows = np.repeat(self.dofs, 4, axis=1).ravel()
@@ -126,21 +132,60 @@ class PressureLoad(Term):
             b, np.full(self.m, 0.5), minlength=n)
         return np.divide(wet, full, out=np.zeros(n), where=full > 0)
 
-    def target_reach(self, contact_pressure_at_nodes, p):
+    @property
+    def pressures(self):
+        """The fluids' pressures, functions of t (MPa): one here."""
+        return [self.pressure]
+
+    def fluid_share(self, t):
+        """The fluid's pressure on each node's wetted share, phi p(t) (MPa), 0 off the loop."""
+        return self.wet_share() * self.pressure(t)
+
+    def target_reach(self, contact_pressure_at_nodes, t):
         """How far the fluid gets each way (edges from the start) for the nodal wall contact
-        pressures p_c at fluid pressure p: where g = p_c + phi p - p - p_crit crosses zero
-        (see the module docstring), phi from the present wetting."""
+        pressures p_c at the fluid pressure p(t): where g = p_c + phi p - p - p_crit crosses
+        zero (see the module docstring), phi from the present wetting."""
+        p = self.pressure(t)
         g = contact_pressure_at_nodes + (self.wet_share() - 1.0) * p - self.p_crit
         return [self._reach(g, 1), self._reach(g, -1)]
 
-    def update(self, contact_pressure_at_nodes, p, max_advance=None, recede=True):
-        """Move the fronts to ``target_reach``; return how far they moved (edges).
+    @property
+    def entries(self):
+        """The fluid's entry node (a list of one)."""
+        return [int(self.edges[self.start, 0])]
+
+    def recount(self, reach, entries):
+        """``reach`` counted from the entry nodes ``entries`` (a saved state's), counted
+        from this load's entries: the same wetted edges."""
+        (node,) = entries
+        old = int(np.nonzero(self.edges[:, 0] == node)[0][0])
+        shift = (self.start - old + self.m // 2) % self.m - self.m // 2   # signed, edges
+        ahead, back = (float(r) for r in reach)
+        return [ahead - shift, back + shift]
+
+    def rebuilt(self, pressures=None, udofs=None, dry=None):
+        """The same wetting, for another step: ``pressures`` (a list of one function of t)
+        in place of the pressure, ``udofs`` another numbering, the edges of the mask ``dry``
+        unwetted (the rod side where the film carries the fluid)."""
+        new = copy.copy(self)
+        if pressures is not None:
+            (new.pressure,) = pressures
+        if udofs is not None:
+            new._number(udofs)
+        new.reach = None if self.reach is None else list(self.reach)
+        new.s0, new.s1 = self.s0.copy(), self.s1.copy()
+        if dry is not None:
+            new.s0[dry] = new.s1[dry] = 0.0
+        return new
+
+    def update(self, contact_pressure_at_nodes, t, max_advance=None, recede=True):
+        """Move the fronts to ``target_reach`` at time t; return how far they moved (edges).
 
         ``max_advance`` (edges): how far each front may advance in one update. A region
         whose contact pressure falls below p all at once would otherwise flood in one step,
         a load jump that no step size can soften (met in the viscoelastic hold).
         ``recede=False``: the fronts may only advance (while the pressure rises)."""
-        reach = self.target_reach(contact_pressure_at_nodes, p)
+        reach = self.target_reach(contact_pressure_at_nodes, t)
         old = self.reach
         if old is not None:
             if max_advance is not None:
@@ -248,8 +293,8 @@ class AdvancingFront(Term):
         self.max_advance = max_advance
 
     def accepted(self, t, u):
-        self.load.update(self.contact_pressure(t, u), self.load.pressure(t),
-                         max_advance=self.max_advance, recede=False)
+        self.load.update(self.contact_pressure(t, u), t, max_advance=self.max_advance,
+                         recede=False)
         self.load.check_blow_by(t)
 
 
@@ -266,8 +311,8 @@ class RelaxedFront(Term):
     def __init__(self, load, contact_pressure, max_advance=1.0):
         self.load, self.contact_pressure = load, contact_pressure
         self.max_advance = max_advance
-        self.omega = [1.0, 1.0]
-        self.direction = [0.0, 0.0]
+        self.omega = [1.0] * len(load.reach)       # per front (two per fluid)
+        self.direction = [0.0] * len(load.reach)
 
     def history(self):
         """Its relaxation state and the fronts' reach (a checkpoint of the hold)."""
@@ -280,7 +325,7 @@ class RelaxedFront(Term):
 
     def accepted(self, t, u):
         L = self.load
-        target = L.target_reach(self.contact_pressure(t, u), L.pressure(t))
+        target = L.target_reach(self.contact_pressure(t, u), t)
         reach = []
         for i, (goal, now) in enumerate(zip(target, L.reach)):
             d = float(np.sign(goal - now))

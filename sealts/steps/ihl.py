@@ -23,7 +23,7 @@ class Ihl(Step):
         chain = model.mesh.chain("rod_side")
         p_fluid = np.zeros(chain.size)
         if state.load is not None:
-            p_fluid = state.load.wet_share()[chain] * state.load.pressure(t)
+            p_fluid = state.load.fluid_share(t)[chain]
         y, h, p_contact = model.contact_profile(t, u)
         order = np.argsort(y)
         y, h, p_contact, p_fluid = y[order], h[order], p_contact[order], p_fluid[order]

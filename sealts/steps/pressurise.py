@@ -23,21 +23,23 @@ class Pressurise(Step):
 
     @staticmethod
     def pressure_load(state):
-        """The pressure load of the step: p_in ramped over the protocol's ramp, nothing
-        wetted yet."""
-        p_in, t0 = state.scene.fluid.p_in, state.protocol.pressurise[0]
-        return state.model.pressure_load(lambda t: p_in * ramp(t - t0),
-                                          state.scene.fluid.p_crit)
+        """The pressure load of the step: p_in ramped over the protocol's ramp, and with
+        it a back pressure p_out on the atmosphere side, nothing wetted yet."""
+        fl, t0 = state.scene.fluid, state.protocol.pressurise[0]
+        p_in, p_out = fl.p_in, fl.p_out
+        back = (lambda t: p_out * ramp(t - t0)) if p_out != 0.0 else None
+        return state.model.pressure_load(lambda t: p_in * ramp(t - t0), fl.p_crit, back)
 
     def run(self, state):
         model, scene = state.model, state.scene
-        p_in, dt = scene.fluid.p_in, scene.mount.dt
+        p_in, p_out, dt = scene.fluid.p_in, scene.fluid.p_out, scene.mount.dt
         mounted = state.results
+        back = f", back pressure {p_out:g} MPa" if p_out != 0.0 else ""
         state.say(f"mounted: rod force {mounted['contact_force_total']:.6g} N; pressurising "
-                  f"to {p_in:g} MPa", force=True)
+                  f"to {p_in:g} MPa{back}", force=True)
         t0, t_ramp, t1 = state.protocol.pressurise
         load = self.pressure_load(state)
-        load.update(model.node_contact_pressure(t0, state.u), 0.0)
+        load.update(model.node_contact_pressure(t0, state.u), t0)
         eq = quasi_static(model, [load], state.u, (t0, t_ramp, t1), dt,
                           hooks=[AdvancingFront(load, model.node_contact_pressure,
                                                 max_advance=FRONT_STEP)],
@@ -60,4 +62,4 @@ class Pressurise(Step):
                       "try a larger fluid.p_crit", force=True)
         y, h, p = model.contact_profile(t1, eq.u)
         state.writer.profile(t1, {"y": y, "h": h, "p_contact": p},
-                             label=f"pressurised to {p_in:g} MPa, pseudo-time {t1:g}")
+                             label=f"pressurised to {p_in:g} MPa{back}, pseudo-time {t1:g}")

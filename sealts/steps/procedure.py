@@ -31,7 +31,8 @@ def steps_1_2(scene):
     """A seal scene's steps 1-2: mount and (p_in != 0) pressurise, or the restart."""
     if scene.start.state:
         return [Restart(scene.start.state)]
-    return [Mount()] + ([Pressurise()] if scene.fluid.p_in != 0.0 else [])
+    fl = scene.fluid
+    return [Mount()] + ([Pressurise()] if fl.p_in != 0.0 or fl.p_out != 0.0 else [])
 
 
 def steps_for(scene, command="run", resume=None):

@@ -88,7 +88,7 @@ def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30):
     contact = model.node_contact_pressure
     for k in range(max_updates):
         kept = list(load.reach)
-        moved = load.update(contact(t, eq.u), load.pressure(t))
+        moved = load.update(contact(t, eq.u), t)
         load.check_blow_by(t)
         if moved < tol:
             load.set_reach(kept)

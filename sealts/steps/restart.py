@@ -25,17 +25,24 @@ class Restart(Step):
             raise SceneError(f"start.state: {path} was saved for another mesh "
                              f"({X.shape[0]} nodes; this scene's has "
                              f"{model.mesh.X.shape[0]})")
-        p_in = scene.fluid.p_in
-        if float(attrs.get("p_in", 0.0)) != p_in:
-            raise SceneError(f"start.state: {path} was pressurised to "
-                             f"{attrs.get('p_in'):g} MPa, not fluid.p_in = {p_in:g} MPa")
+        for key in ("p_in", "p_out"):
+            p = getattr(scene.fluid, key)
+            if float(attrs.get(key, 0.0)) != p:
+                raise SceneError(f"start.state: {path} was pressurised to {key} = "
+                                 f"{float(attrs.get(key, 0.0)):g} MPa, not fluid.{key} = "
+                                 f"{p:g} MPa")
+        pressurised = scene.fluid.p_in != 0.0 or scene.fluid.p_out != 0.0
         state.u = np.zeros(model.n)
         state.u[model.udofs] = un
-        state.t = float(attrs.get("t", state.protocol.end(pressurised=p_in != 0.0)))
-        if p_in != 0.0:
+        state.t = float(attrs.get("t", state.protocol.end(pressurised=pressurised)))
+        if pressurised:
             state.load = Pressurise.pressure_load(state)
             state.load.p_crit = float(attrs["p_crit"])
-            state.load.set_reach(reach)
+            entries = attrs.get("front_entries")
+            if entries is None:       # written before the entry moved: the smallest z
+                side = model.mesh.nodes("pressure_side")
+                entries = [side[np.argmin(model.mesh.X[side, 1])]]
+            state.load.set_reach(state.load.recount(reach, entries))
         state.udot = None
         state.say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not "
                   "repeated", force=True)

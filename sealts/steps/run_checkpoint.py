@@ -16,7 +16,7 @@ into place):
   series rows and profiles so far, the step's wall time; the stroke's transport per
   direction and field frames;
 * the scene's fingerprint: every key but the name, description, output and start, and
-  the steering keys (STEERING: the stroke's t_end, dt, rtol, stabilisation, output times,
+  the steering keys (STEERING: the stroke's t_end, dt, rtol, stabilisations, output times,
   the hold's dt and rtol, [petsc]), which a resumed run may change, e.g. to go on to a
   later t_end (the hold's t_end classifies its Prony terms: not a steering key).
 
@@ -36,7 +36,7 @@ import numpy as np
 
 from ..core import Observer
 
-VERSION = 2          # of the file's layout: a checkpoint of another layout is refused
+VERSION = 3          # of the file's layout: a checkpoint of another layout is refused
 PROFILES = "stroke_profiles.csv"
 
 
@@ -54,7 +54,7 @@ FREE = ("name", "description", "source", "output", "start")
 # resumed run may change them, e.g. go on to a later t_end, or with stroke.stabilisation
 # after a snap; the summary then lists what changed (``restart_changes``)
 STEERING = ("stroke.t_end", "stroke.dt", "stroke.rtol", "stroke.stabilisation",
-            "stroke.output_times", "hold.dt", "hold.rtol", "petsc")
+            "stroke.snap_stabilisation", "stroke.output_times", "hold.dt", "hold.rtol", "petsc")
 
 
 def _split(scene):

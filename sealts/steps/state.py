@@ -49,8 +49,7 @@ class RunState:
         into it)."""
         load = None
         if self.load is not None:
-            load = copy.copy(self.load)
-            load.set_reach(list(self.load.reach))
+            load = self.load.rebuilt()
         return replace(self, load=load, counters=copy.copy(self.counters),
                        results=copy.deepcopy(self.results),
                        parts=copy.deepcopy(self.parts), done=list(self.done))
@@ -60,10 +59,13 @@ class RunState:
         coordinates, the front's reach; p_in, p_crit, t, the scene and the results."""
         m = self.model
         arrays = {"u": np.array(self.u[m.udofs]), "X": m.mesh.X}
-        attrs = {"p_in": self.scene.fluid.p_in, "t": self.t, "scene": self.scene.name,
+        fl = self.scene.fluid
+        attrs = {"p_in": fl.p_in, "p_out": fl.p_out, "t": self.t, "scene": self.scene.name,
                  "source": self.scene.source, "results": json.dumps(self.results)}
         if self.load is not None:
+            # the reach counts edges from each fluid's entry node, saved beside it
             arrays["front_reach"] = np.asarray(self.load.reach, float)
+            arrays["front_entries"] = np.asarray(self.load.entries, np.int64)
             attrs["p_crit"] = self.load.p_crit
         return arrays, attrs
 
@@ -84,6 +86,8 @@ def read_state(path):
             X, un = f["X"][()], f["u"][()]
             reach = f["front_reach"][()] if "front_reach" in f else None
             attrs = dict(f.attrs)
+            if "front_entries" in f:
+                attrs["front_entries"] = f["front_entries"][()]
     except (OSError, KeyError) as e:
         raise SceneError(f"start.state: {path} is not a sealts state file ({e})") from None
     return un, X, reach, attrs

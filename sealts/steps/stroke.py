@@ -20,6 +20,7 @@ from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
 from ..problem.stroke_problem import StrokeProblem
 from ..solid.stresses import stress_cells
 from .base import Step
+from ..core import StepTooSmall
 from .run_checkpoint import PROFILES, Resumed, StepCheckpoint, changes
 
 
@@ -83,13 +84,41 @@ class Stroke(Step):
         self.resume = resume
 
     def run(self, state):
+        first = Resumed(self.resume) if self.resume else None
+        t_wall = time.perf_counter() - (first.wall if first else 0.0)
+        try:
+            self._run(state, first)
+        except StepTooSmall as e:
+            # a snap (steps stuck at TS's minimum): back to the last stop's checkpoint, and
+            # from there with stroke.snap_stabilisation, once
+            path = state.writer.dir / "stroke_checkpoint.h5"
+            c = state.scene.stroke.snap_stabilisation
+            if (e.t is None or not path.exists()
+                    or c <= state.scene.stroke.stabilisation or "snap stabilisation" in str(e)):
+                raise
+            back = Resumed(path)
+            state.say(f"stroke: the seal snaps at t = {e.t:.6g} s ({e}); going on from "
+                      f"t = {back.t:.6g} s with the snap stabilisation c = {c:g} MPa s/mm^2",
+                      force=True)
+            self._run(state, back, snapped_at=e.t)
+            part = state.parts["stroke"]
+            part["snap_stabilised_from"] = back.t
+            part["wall_time_s"] = time.perf_counter() - t_wall    # both attempts
+            if first is None:
+                part.pop("restarted_at", None)
+
+    def _run(self, state, back, snapped_at=None):
+        """The stroke from its start, or from the checkpoint ``back``; ``snapped_at``: the
+        time of a snap, from which on (from ``back``) the snap stabilisation acts."""
         model, scene, say, writer = state.model, state.scene, state.say, state.writer
         st = scene.stroke
         t_wall = time.perf_counter()
-        back = Resumed(self.resume) if self.resume else None
         if back is not None:
             back.restore_run(state)
         stroke = StrokeProblem(model, state.u, scene, state.load)
+        if snapped_at is not None:
+            k = stroke.problem.history_terms().index(stroke.stab)
+            back.snapshot["history"][str(k)]["snapped_at"] = np.array(float(snapped_at))
         if stroke.viscoelastic:
             ves = stroke.viscoelastic
             say(ves.classes.describe(ves.series, ves.shift), force=True)
@@ -148,6 +177,9 @@ class Stroke(Step):
             "stabilisation_share": float(max(r["F_stabilisation"] / max(abs(r["normal_load"]),
                                                                           1e-300)
                                              for r in rows)),
+            # the time of the seal's snap (stroke.snap_stabilisation acts from the last stop
+            # before it, snap_stabilised_from)
+            "snapped_at": stroke.stab.snapped_at if stroke.stab.snapped_at >= 0.0 else None,
             "steps_accepted": c.steps, "steps_rejected": c.rejected,
             "newton_iterations": c.newton, "linear_iterations": c.linear,
             "wall_time_s": time.perf_counter() - t_wall,
