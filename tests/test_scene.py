@@ -162,7 +162,7 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[mesh]\nh_bulk = 1e-3\nh_contact = 1e-3\n", "mesh.h_bulk = 0.001 mm: about 2.3e+07"),
     ("[viscoelastic]\nprony = 'table2'\n[hold]\np_end = -0.2\n[fluid]\np_in = 1.0\n",
      "hold.p_end = -0.2 MPa is below vacuum"),
-    ("[fluid]\np_in = 0.5\np_out = 0.5\n", "fluid.p_out = 0.5 MPa: a seal scene's atmosphere"),
+    ("[fluid]\np_in = 0.5\np_out = -0.5\n", "fluid.p_out = -0.5 MPa is below vacuum"),
     ("[groove]\nmu = -0.1\n", "groove.mu must be >= 0"),
     ("[stroke]\nvelocity = 'sine'\ngamma_crit = 0.0\n", "stroke.gamma_crit must be > 0 mm"),
     ("[stroke]\nvelocity = 'sine'\nfilm = 'no'\n", "stroke.film must be true or false"),
