@@ -141,7 +141,8 @@ def run_case(name, overrides, mesh, timeout, work):
     if rc != 0:
         row["why"] = s.get("error", err[0])[:320]
     elif st.get("snapped_at") is not None:
-        row["why"] = f"snapped at t = {st['snapped_at']:.4g} s, stabilised from there"
+        row["why"] = (f"snapped at t = {st['snapped_at']:.4g} s; snap stabilisation from the "
+                      f"last stop, t = {st.get('snap_stabilised_from', 0.0):.4g} s")
     row.update({"accepted": st.get("steps_accepted", ""), "rejected": st.get("steps_rejected", ""),
                 "Newton": st.get("newton_iterations", ""),
                 "net mm^3": st.get("leakage_out", ""),
