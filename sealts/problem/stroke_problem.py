@@ -423,5 +423,7 @@ class StrokeProblem:
             if self.stab.snapped_at >= 0.0:
                 raise StepTooSmall(f"{e}; stuck again with the snap stabilisation (c = "
                                    f"{self.stab.c:g} MPa s/mm^2, for a snap at t = "
-                                   f"{self.stab.snapped_at:.6g} s)", t=e.t) from None
+                                   f"{self.stab.snapped_at:.6g} s); a finer contact mesh "
+                                   "(mesh.h_contact) resolved some such stops",
+                                   t=e.t) from None
             raise
