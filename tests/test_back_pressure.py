@@ -94,3 +94,21 @@ def test_a_stroke_with_equal_pressures_on_both_sides(tmp_path):
     U = stroke.run(U0, 0.03, 2.5e-4, 1e-3)
     s1 = stroke.scalars(0.03, U)
     assert np.isfinite(U).all() and s1["load_fluid"] > 0.0
+
+
+def test_the_hold_starts_with_the_loads_pressurisation_left(states):
+    """No jump of the fluids' load where the viscoelastic hold takes over from step 2:
+    p_in (ramped from there) and the held back pressure load the seal as at the end of the
+    pressurisation."""
+    from dataclasses import replace
+
+    from sealts.problem.hold_problem import HoldProblem
+    st = states[(P, P)]
+    ve = replace(st.scene.viscoelastic, prony="custom", prony_g=(0.5,), prony_tau=(1.0,))
+    hold = HoldProblem(st.model, st.u, st.load, P, 2 * P, 1e-3, ve, 10.0,
+                       p_back=st.scene.fluid.p_out)
+    F0 = st.load.forces(st.t, st.u)
+    assert np.abs(hold.load.forces(0.0, st.u) - F0).max() <= 1e-12 * np.abs(F0).max()
+    # and later the back pressure is still there: only p_in's share doubles
+    back = hold.load.loads[1].forces(10.0, st.u)
+    assert np.abs(back - st.load.loads[1].forces(st.t, st.u)).max() <= 1e-12 * np.abs(F0).max()

@@ -22,7 +22,9 @@ from .seal_model import ramp
 class HoldProblem:
     """The hold's DAE on a SealModel after pressurisation, with the front ``load`` of step 2."""
 
-    def __init__(self, model, u0, load, p_from, p_to, t_ramp, ve, t_end):
+    def __init__(self, model, u0, load, p_from, p_to, t_ramp, ve, t_end, p_back=0.0):
+        """p_in from ``p_from`` to ``p_to`` (MPa) over ``t_ramp`` (s), held to ``t_end``;
+        ``p_back`` the back pressure (fluid.p_out), held."""
         self.model, self.p_to = model, p_to
         ves = ViscoelasticSolid(model, ve, t_end)
         self.series, self.shift = ves.series, ves.shift
@@ -38,10 +40,10 @@ class HoldProblem:
         self.rod = RodContact(self.side, model.law)
         self.groove = copy.copy(model.groove)
         self.groove.r_bottom = lambda t: model.r_g_final
-        # step 2's wetting, with p_in ramped from p_from to p_to (a back pressure stays)
+        # step 2's wetting, with p_in ramped from p_from to p_to (a back pressure held)
         self.load = load.rebuilt(
-            [lambda t: p_from + (p_to - p_from) * ramp(t / t_ramp)] + load.pressures[1:],
-            udofs=lay.udofs)
+            [lambda t: p_from + (p_to - p_from) * ramp(t / t_ramp), lambda t: p_back]
+            [:len(load.pressures)], udofs=lay.udofs)
         # serial start vector; each rank fills the internal variables of its own cells
         self.U0 = np.zeros(lay.n)
         self.U0[lay.udofs] = u0[model.udofs]

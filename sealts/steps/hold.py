@@ -54,7 +54,7 @@ class Hold(Step):
         if back is not None:
             back.restore_run(state)
         step = HoldProblem(model, state.u, state.load, p_in, hold.p_end, hold.t_ramp, ve,
-                           hold.t_end)
+                           hold.t_end, p_back=scene.fluid.p_out)
         say(step.classes.describe(step.series, step.shift), force=True)
         say(f"hold: {p_in:g} -> {hold.p_end:g} MPa over {hold.t_ramp:g} s, held to "
             f"{hold.t_end:g} s; {step.layout.n} unknowns ({len(step.classes.active)} active "
