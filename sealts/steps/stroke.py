@@ -15,12 +15,12 @@ import time
 
 import numpy as np
 
+from ..core import StepTooSmall
 from ..io.fields import FieldSeries
 from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
 from ..problem.stroke_problem import StrokeProblem
 from ..solid.stresses import stress_cells
 from .base import Step
-from ..core import StepTooSmall
 from .run_checkpoint import PROFILES, Resumed, StepCheckpoint, changes
 
 
