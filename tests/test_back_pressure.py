@@ -112,3 +112,31 @@ def test_the_hold_starts_with_the_loads_pressurisation_left(states):
     # and later the back pressure is still there: only p_in's share doubles
     back = hold.load.loads[1].forces(10.0, st.u)
     assert np.abs(back - st.load.loads[1].forces(st.t, st.u)).max() <= 1e-12 * np.abs(F0).max()
+
+
+def test_two_fluid_load_jacobian(tmp_path):
+    """The two fluids' load stiffness (their COO patterns concatenated) against central
+    differences, with partly wetted edges of both (bound 1e-7, as for one fluid)."""
+    from sealts.mesh.seal_mesh import ORing, build_mesh
+    from sealts.problem import Problem
+    from sealts.solid.fluid_loads import FluidLoads
+    from sealts.solid.pressure import PressureLoad
+    m = build_mesh(ORing(50.17, 5.33), 0.3, 0.6, cache_dir=tmp_path)
+    n = 2 * m.X.shape[0]
+    rng = np.random.default_rng(3)
+    fluids = []
+    for p, side in ((1.3, "pressure_side"), (0.7, "atmosphere_side")):
+        f = PressureLoad(m.X, m.conn, lambda t, p=p: p, True, m.nodes(side)[0])
+        f.s0 = rng.uniform(0, 0.5, f.m) * (rng.random(f.m) < 0.3)
+        f.s1 = np.maximum(f.s0, rng.uniform(0.5, 1.0, f.m) * (rng.random(f.m) < 0.5))
+        fluids.append(f)
+    load = FluidLoads(fluids)
+    u = np.random.default_rng(2).uniform(-0.05, 0.05, n)
+    problem = Problem(n, [load])
+    J = problem.jacobian_dense(0.0, u, u, 0.0)
+    assert np.abs(J).max() > 0.0
+    for j in range(0, n, 7):
+        e = np.zeros(n)
+        e[j] = 1e-7
+        fd = (problem.residual(0.0, u + e, u) - problem.residual(0.0, u - e, u)) / 2e-7
+        assert np.abs(J[:, j] - fd).max() <= 1e-7 * np.abs(J).max()
