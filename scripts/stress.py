@@ -4,8 +4,12 @@ Runs ``sealts run`` on variants of ``configs/oring_stroke.toml`` (the paper's O-
 10 s sine cycle at 500 mm/s) one factor at a time, each in its own process with a time
 limit, and prints one table row per case: finished or the error (the failing step and the
 solver's reason, from ``summary.json``), accepted and rejected stroke steps, Newton
-iterations, min h (um, negative: the seal's mean plane past the rod's), peak friction,
-net leakage, any NaN or Inf in the series, and wall time. ``--out FILE`` also writes the
+iterations and failed Newton solves (each retried with a smaller step), min h (um,
+negative: the seal's mean plane past the rod's), the groove walls' largest penalty
+penetration (um), net leakage, the film's balance (V_in - V_out minus the change of the
+fluid the film holds, mm^3: what the film's storage M_i dh_i/dt leaves out, chiefly the
+seal surface's axial motion, Eq. 21), peak friction, any NaN or Inf in the series, and
+wall time. ``--out FILE`` also writes the
 table as Markdown with the machine's load. Usage:
 
     .venv/bin/python scripts/stress.py [--factors pressure,speed,...] [--mesh 0.05 0.2]
@@ -21,8 +25,9 @@ flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
 ``clearance`` extrusion gaps of 0.02, 0.05 and 0.1 mm at 1, 5 and 10 MPa; ``back`` a back
 pressure p_out (p_in = p_out = 1 MPa, 10 against 5 MPa, and 1 MPa on the atmosphere side
 alone); ``hold`` the viscoelastic O-ring of ``configs/oring_hold.toml`` held 15 h at 5 and
-at 20 MPa (a case's ``_base`` names another shipped scene). Not yet: the full pressure x
-clearance x amplitude grid.
+at 20 MPa (a case's ``_base`` names another shipped scene); ``grid`` the operating map,
+p_in 0, 1, 5, 10, 20, 30, 40 MPa x clearance 0 (the default) and 0.1 mm x amplitude 1,
+100 and 2000 mm/s (42 cases).
 Add a factor as one entry of FACTORS.
 """
 import argparse
@@ -92,6 +97,12 @@ FACTORS = {
              for p in (5.0, 20.0)],
     "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
              ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
+    # the operating map: sealed pressure x extrusion gap (none, the default, and 0.1 mm) x
+    # the sine's amplitude
+    "grid": [(f"p_in {p:g} MPa, clearance {c:g} mm, v_max {v:g} mm/s",
+              {"fluid": {"p_in": float(p)}, "groove": {"clearance": c},
+               "stroke": {"v_max": float(v)}})
+             for c in (0.0, 0.1) for v in (1, 100, 2000) for p in (0, 1, 5, 10, 20, 30, 40)],
 }
 
 
@@ -145,8 +156,12 @@ def run_case(name, overrides, mesh, timeout, work):
     elif st.get("snapped_at") is not None:
         row["why"] = (f"snapped at t = {st['snapped_at']:.4g} s; snap stabilisation from the "
                       f"last stop, t = {st.get('snap_stabilised_from', 0.0):.4g} s")
+    pen, bal = st.get("wall_penetration"), st.get("film_balance")
     row.update({"accepted": st.get("steps_accepted", ""), "rejected": st.get("steps_rejected", ""),
                 "Newton": st.get("newton_iterations", ""),
+                "failed Newton": st.get("newton_failures", ""),
+                "wall pen. um": pen * 1e3 if pen is not None else "",
+                "film balance mm^3": bal if bal is not None else "",
                 "net mm^3": st.get("leakage_out", ""),
                 "F out / in N": (f"{st['peak_friction_outstroke']:.4g} / "
                                  f"{st['peak_friction_instroke']:.4g}")
@@ -156,8 +171,9 @@ def run_case(name, overrides, mesh, timeout, work):
     return row
 
 
-COLS = ["case", "status", "accepted", "rejected", "Newton", "min h um", "net mm^3",
-        "F out / in N", "NaN/Inf", "wall s", "why"]
+COLS = ["case", "status", "accepted", "rejected", "Newton", "failed Newton", "min h um",
+        "wall pen. um", "net mm^3", "film balance mm^3", "F out / in N", "NaN/Inf", "wall s",
+        "why"]
 
 
 def fmt(v):

@@ -90,6 +90,7 @@ class Counters:
     rejected: int = 0
     newton: int = 0
     linear: int = 0
+    newton_failures: int = 0    # failed Newton solves, each retried with a smaller step
     residuals: int = 0
     jacobians: int = 0
 

@@ -163,6 +163,7 @@ def test_rigid_limit_is_the_film_only_scheme(tmp_path, end):
 
 def test_mass_balance_and_radial_force(tmp_path):
     """The interior balances add up to Q_in - Q_out - d/dt(sum_i M_i h_i) = 0 to round-off,
+    the film's content is A sum_i M_i h_i,
     with the boundary flows from the element flows and the end control volumes, and the film
     volume differenced in time along u + s U' with a moving rod; and the radial film force on
     the seal is A times the trapezoid integral of p over the current y."""
@@ -198,6 +199,9 @@ def test_mass_balance_and_radial_force(tmp_path):
     Q_in, Q_out = term.flows(t, u, ud)
     assert Q_in == pytest.approx(AREA * q_in, rel=1e-13)
     assert Q_out == pytest.approx(AREA * q_out, rel=1e-13)
+    # the fluid the film holds (the stroke's V_film, whose change the summary's film_balance
+    # sets against V_in - V_out): A sum_i M_i h_i
+    assert term.content(t, u) == pytest.approx(AREA * volume(0.0), rel=1e-13)
     # the load: on the chain's u_r (outward on the seal) and u_z rows only; radially
     # A int p dy, axially -A int p dr over the current chain (trapezoids)
     f_u = f.copy()

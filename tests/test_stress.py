@@ -60,6 +60,21 @@ def test_high_pressure_outstroke_finishes_with_coulomb_friction(outstroke):
     assert np.abs(s["friction_solid"][slid]) == pytest.approx(0.1 * load[slid], rel=1e-2)
 
 
+def test_the_stroke_starts_with_its_front_settled(outstroke):
+    """Step 2 settles the pressure-penetration fronts with the fluid on the rod side as a
+    pressure load; the stroke's film puts another pressure there, and at 20 MPa the groove-
+    side front stood 0.7 edges short of where the seal's contact put it when the stroke
+    began (the rod side's front is the film's and stays). The start now settles it with the
+    film, so the front's distance to its target (the series' front_drift) stays a small
+    fraction of an edge while the stroke keeps it; without the settling this fails."""
+    r, res = outstroke
+    assert r.returncode == 0, r.stderr[-1500:]
+    drift = res.series["front_drift"]
+    assert drift[0] < 1e-3, drift[0]
+    assert res.summary["stroke"]["front_drift"] == pytest.approx(drift.max())
+    assert drift.max() < 0.1, drift.max()
+
+
 def test_40mpa_pressurisation_seals_and_does_not_flood(tmp_path):
     """Step 2 to 40 MPa on the 0.05 / 0.2 mesh. The fluid is held back at the start node
     until p exceeds the contact there; the state it then reads carries no fluid load yet,
@@ -79,3 +94,26 @@ def test_40mpa_pressurisation_seals_and_does_not_flood(tmp_path):
     assert res["front_change_edges"] < 1e-4            # front and equilibrium agree
     assert res["p_contact_max"] > 40.0 + s.fluid.p_crit
     assert 0.2 < res["wetted_boundary_fraction"] < 0.6
+
+
+def test_the_films_front_is_held_and_its_edges_stay_dry():
+    """In the stroke the film carries the fluid along the rod side: the pressure load is
+    rebuilt with those edges dry, the front that starts along them is held (its target is
+    where it stands, whatever the contact says) and no new wetting re-wets them. A 2 x 2
+    quad square, 8 boundary edges, the fluid entering at node 0."""
+    from sealts.solid.pressure import PressureLoad
+    X = np.array([[x, y] for y in range(3) for x in range(3)], float) + [1.0, 0.0]
+    conn = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
+    load = PressureLoad(X, conn, lambda t: 1.0, True, start_node=0)
+    load.set_reach([1.5, 2.5])
+    first = load.start                     # the first edge of the front walking +1
+    dry = np.zeros(load.m, bool)
+    dry[[first, (first + 1) % load.m]] = True
+    stroke = load.rebuilt(dry=dry)
+    assert stroke.held == (True, False)
+    assert (stroke.wet[dry] == 0.0).all() and stroke.wet.sum() == pytest.approx(2.5)
+    dry_everywhere = np.zeros(X.shape[0])  # no contact: the free front floods, the held one stays
+    assert stroke.target_reach(dry_everywhere, 0.0) == [1.5, float(load.m)]
+    stroke.update(dry_everywhere, 0.0)
+    assert (stroke.wet[dry] == 0.0).all()
+    assert load.held == (False, False) and load.wet[first] == 1.0   # step 2's load unchanged

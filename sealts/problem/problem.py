@@ -459,7 +459,8 @@ class Problem:
         first order), so nothing else carries over."""
         ts = self._ts
         c = self.counters + Counters(ts.getStepNumber(), ts.getStepRejections(),
-                                     ts.getSNESIterations(), ts.getKSPIterations())
+                                     ts.getSNESIterations(), ts.getKSPIterations(),
+                                     ts.getSNESFailures())
         return {"t": ts.getTime(), "dt": ts.getTimeStep(),
                 "last_dt": -1.0 if self._last_dt is None else self._last_dt,
                 "counters": asdict(c),
@@ -564,6 +565,7 @@ class Problem:
             c.rejected += ts.getStepRejections()
             c.newton += ts.getSNESIterations()
             c.linear += ts.getKSPIterations()
+            c.newton_failures += ts.getSNESFailures()
             ts.destroy()
             self._ts = None
             for obs in observers:

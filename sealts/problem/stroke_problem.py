@@ -79,12 +79,13 @@ from ..contact.extrusion_guard import extrusion
 from ..contact.friction import RodFriction
 from ..contact.friction_work import FrictionWork
 from ..contact.groove_friction import GrooveFriction
-from ..contact.rigid import GrooveContact, RodContact, tributary_lengths
+from ..contact.rigid import GrooveContact, RodContact, node_contact_pressure, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..contact.slip_state_friction import SlipStateFriction
 from ..core import Constraints, StepTooSmall
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
+from ..solid.pressure import front_drift
 from ..solid.stabilisation import SnapStabilisation
 from ..solid.term import SolidTerm
 from ..solid.viscoelastic_solid import ViscoelasticSolid
@@ -237,6 +238,11 @@ class StrokeProblem:
         return (self.guards + [solid] + stab + ([prony] if prony is not None else [])
                 + self.layout.on_root(boundary))
 
+    def node_contact_pressure(self, t, U):
+        """The walls' and the rod's contact pressure at every node (MPa), what the fronts
+        are tested against."""
+        return node_contact_pressure(self.model.mesh.X.shape[0], self.groove, self.rod, t, U)
+
     def start(self):
         """Film pressures with the seal held, then seal and film in equilibrium at t = 0."""
         lay, comm, n = self.layout, self.problem.comm, self.n
@@ -274,12 +280,31 @@ class StrokeProblem:
                                    constraints=Constraints(loc, U[fixed][mine]),
                                    prefix="stroke_start_", dofs=lay, linesearch="bt")
         U = start.solve_steady(U, 0.0)
+        if self.load is not None:
+            U = self._settle_front(start, U)
         self.problem.counters.newton += start.counters.newton
         self._relaxed_from = U
         if self.prony is not None:
             U[lay.prony_dofs[lay.cells]] = self.viscoelastic.relax(self.prony, U[lay.serial])
             U = self.problem.gather(self.problem._owned(U)).copy()   # every rank's cells
         self.problem.accepted(0.0, U)
+        return U
+
+    def _settle_front(self, start, U, tol=1e-4, max_updates=30):
+        """The fronts settled with the film: step 2 settled them with the fluid on the rod
+        side as a pressure load, the film's pressure there is another (the coarse O-ring at
+        20 MPa: the groove-side front 0.7 edges short of its target). Front update and the
+        start's solve in turn until a front would move less than ``tol`` edges (as step
+        2's ``settle_front``); the rod side's front is the film's and stays."""
+        load = self.load
+        for _ in range(max_updates):
+            kept = list(load.reach)
+            moved = load.update(self.node_contact_pressure(0.0, U), 0.0)
+            load.check_blow_by(0.0)
+            if moved < tol:
+                load.set_reach(kept)
+                break
+            U = start.solve_steady(U, 0.0)
         return U
 
     def output_terms(self):
@@ -331,7 +356,7 @@ class StrokeProblem:
         y = self.side.y(U)
         touching = rod.law.touching(h)
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
-        q_in = q_out = shear = load_fluid = p_max = 0.0
+        q_in = q_out = shear = load_fluid = p_max = v_film = 0.0
         volumes = np.zeros(2)
         if f is not None:
             q_in, q_out = self.leakage.flows(t, U, Udot)
@@ -339,6 +364,7 @@ class StrokeProblem:
             load_fluid = float(f.forces(t, U).sum())
             volumes = U[self.vdofs]
             p_max = float(f.pressure(U).max())
+            v_film = f.content(t, U)
         load_asperity = float(rod.forces(t, U).sum())
         solid = float(self.friction.total(t, U)) if self.friction is not None else 0.0
         gf = self.groove_friction
@@ -354,7 +380,13 @@ class StrokeProblem:
                 "load_asperity": load_asperity, "Q_in": q_in, "Q_out": q_out,
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
                 "asperity_contact_length": length, "p_fluid_max": p_max,
-                "W_friction": work, "F_stabilisation": f_stab}
+                "W_friction": work, "F_stabilisation": f_stab, "V_film": v_film,
+                # edges between the kept pressure-penetration fronts and where the
+                # seal's contact would put them
+                "front_drift": (front_drift(self.load, self.node_contact_pressure(t, U), t)
+                                if self.load is not None else 0.0),
+                # the groove walls' penalty penetration, p / k (mm)
+                "wall_penetration": float(self.groove.node_pressures(t, U).max()) / self.groove.k}
         if self.groove.edge is not None:     # how far the seal is into the extrusion gap, mm
             out["extrusion"] = extrusion(self.groove, t, U)[0]
         return out

@@ -78,6 +78,10 @@ class FluidLoads(Term):
         total = sum(shares)
         return [contact + total - own for own in shares]
 
+    @property
+    def held(self):
+        return tuple(h for f in self.loads for h in f.held)
+
     def target_reach(self, contact_pressure_at_nodes, t):
         return [r for f, c in zip(self.loads, self._others(contact_pressure_at_nodes, t))
                 for r in f.target_reach(c, t)]

@@ -73,6 +73,8 @@ class PressureLoad(Term):
         self.s0 = np.zeros(self.m)       # wetted part [s0, s1] of each edge, s from a to b
         self.s1 = np.ones(self.m)
         self.reach = None                # the two fronts' positions (edges from the start)
+        self.held = (False, False)       # fronts another term owns (the film's, in a stroke)
+        self.dry = None                  # edges another term carries the fluid on (a mask)
         self._number(vertex_dofs(X.shape[0]) if udofs is None else udofs)
 
     def _number(self, udofs):
@@ -147,7 +149,8 @@ class PressureLoad(Term):
         zero (see the module docstring), phi from the present wetting."""
         p = self.pressure(t)
         g = contact_pressure_at_nodes + (self.wet_share() - 1.0) * p - self.p_crit
-        return [self._reach(g, 1), self._reach(g, -1)]
+        return [now if held else self._reach(g, step)
+                for now, held, step in zip(self.reach or (None, None), self.held, (1, -1))]
 
     @property
     def entries(self):
@@ -166,7 +169,8 @@ class PressureLoad(Term):
     def rebuilt(self, pressures=None, udofs=None, dry=None):
         """The same wetting, for another step: ``pressures`` (a list of one function of t)
         in place of the pressure, ``udofs`` another numbering, the edges of the mask ``dry``
-        unwetted (the rod side where the film carries the fluid)."""
+        unwetted (the rod side where the film carries the fluid): a front that starts along
+        them is the film's, and stays where it is (``held``)."""
         new = copy.copy(self)
         if pressures is not None:
             (new.pressure,) = pressures
@@ -175,7 +179,9 @@ class PressureLoad(Term):
         new.reach = None if self.reach is None else list(self.reach)
         new.s0, new.s1 = self.s0.copy(), self.s1.copy()
         if dry is not None:
+            new.dry = np.asarray(dry, bool).copy()
             new.s0[dry] = new.s1[dry] = 0.0
+            new.held = (bool(dry[self.start]), bool(dry[(self.start - 1) % self.m]))
         return new
 
     def update(self, contact_pressure_at_nodes, t, max_advance=None, recede=True):
@@ -212,6 +218,8 @@ class PressureLoad(Term):
                         s0[k], s1[k] = 0.0, frac
                     else:
                         s0[k], s1[k] = 1.0 - frac, 1.0
+        if self.dry is not None:
+            s0[self.dry] = s1[self.dry] = 0.0
         self.s0, self.s1 = s0, s1
 
     def _weights(self, xa, xb):
@@ -296,6 +304,13 @@ class AdvancingFront(Term):
         self.load.update(self.contact_pressure(t, u), t, max_advance=self.max_advance,
                          recede=False)
         self.load.check_blow_by(t)
+
+
+def front_drift(load, contact_pressure_at_nodes, t):
+    """The largest distance (edges) from a load's fronts to their targets at a state: how
+    far the seal's contact would move a front that is kept (the stroke's, docs/design.md)."""
+    target = load.target_reach(contact_pressure_at_nodes, t)
+    return float(max(abs(a - b) for a, b in zip(target, load.reach)))
 
 
 class RelaxedFront(Term):

@@ -96,7 +96,7 @@ class Hold(Step):
             "prony_error_bound": step.classes.error_bound,
             "unknowns": int(step.layout.n), "steps_accepted": c.steps,
             "steps_rejected": c.rejected, "newton_iterations": c.newton,
-            "linear_iterations": c.linear,
+            "linear_iterations": c.linear, "newton_failures": c.newton_failures,
             "long_term_check": long_term_check(step, U, t_end, state.protocol),
         }
         if back is not None:

@@ -135,7 +135,8 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
 def _summary(state, command):
     scene, c, model = state.scene, state.counters, state.model
     counts = {"steps_accepted": c.steps, "steps_rejected": c.rejected,
-              "newton_iterations": c.newton, "linear_iterations": c.linear}
+              "newton_iterations": c.newton, "linear_iterations": c.linear,
+              "newton_failures": c.newton_failures}
     if command == "ihl":
         return {"scene": scene.name, "source": scene.source, "analysis": "ihl",
                 "p_in": scene.fluid.p_in, "viscosity": scene.fluid.viscosity,

@@ -24,6 +24,10 @@ from .base import Step
 from .run_checkpoint import PROFILES, Resumed, StepCheckpoint, changes
 
 
+# the front drift (edges) from which the stroke says that it kept the front
+FRONT_DRIFT_NOTE = 1.0
+
+
 class StrokeColumns:
     """``StrokeProblem.scalars`` at each accepted state, U' from the previous one."""
 
@@ -173,6 +177,12 @@ class Stroke(Step):
             "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
             "friction_work": rows[-1]["W_friction"],
             "h_min": float(min(r["h_min"] for r in rows)),
+            "wall_penetration": float(max(r["wall_penetration"] for r in rows)),
+            "front_drift": float(max(r["front_drift"] for r in rows)),
+            # V_in - V_out against the change of the film's content (StrokeProblem.scalars'
+            # V_film): the fluid the film does not account for (mm^3)
+            "film_balance": (rows[-1]["V_in"] - rows[-1]["V_out"]
+                             - (rows[-1]["V_film"] - rows[0]["V_film"])),
             # the stabilisation's largest force (sum of |c V_i u_i'|) against the normal load
             "stabilisation_share": float(max(r["F_stabilisation"] / max(abs(r["normal_load"]),
                                                                           1e-300)
@@ -182,6 +192,7 @@ class Stroke(Step):
             "snapped_at": stroke.stab.snapped_at if stroke.stab.snapped_at >= 0.0 else None,
             "steps_accepted": c.steps, "steps_rejected": c.rejected,
             "newton_iterations": c.newton, "linear_iterations": c.linear,
+            "newton_failures": c.newton_failures,
             "wall_time_s": time.perf_counter() - t_wall,
             "units": {"volume": "mm^3", "force": "N", "work": "N mm"},
         }
@@ -189,5 +200,11 @@ class Stroke(Step):
             state.parts["stroke"]["restarted_at"] = back.t
             if changed:
                 state.parts["stroke"]["restart_changes"] = changed
+        drift = state.parts["stroke"]["front_drift"]
+        if drift > FRONT_DRIFT_NOTE:
+            k = int(np.argmax([r["front_drift"] for r in rows]))
+            say(f"note: the stroke kept the pressure-penetration front where its start put "
+                f"it; at t = {rows[k]['t']:.4g} s the seal's contact would have moved it by "
+                f"{drift:.3g} boundary edges (front_drift in the series)", force=True)
         state.u, state.t = stroke.displacement(U), st.t_end
         state.counters.add(c)
