@@ -106,9 +106,6 @@ def check_restart(outdir, scene):
     if scene.model != "seal" or (scene.stroke.velocity == "none" and step == "stroke"):
         raise SceneError("--restart continues a seal scene's hold or stroke; this scene has "
                          "neither")
-    if step == "hold" and scene.stroke.velocity != "none":
-        raise SceneError("--restart: a scene with a hold and a stroke cannot be restarted "
-                         "yet")
     path = Path(outdir) / file_name(step)
     if not path.is_file():
         raise SceneError(f"--restart: no {file_name(step)} in {outdir} (a {step} writes one "
