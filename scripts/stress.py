@@ -133,6 +133,15 @@ def series_stats(path):
     return h_min, bad
 
 
+def _last_row(path):
+    """The last row of a series.csv as floats ({} without one)."""
+    if not path.exists():
+        return {}
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: float(v) for k, v in rows[-1].items() if v not in ("", None)} if rows else {}
+
+
 def run_case(name, overrides, mesh, timeout, work):
     d = work / "".join(c if c.isalnum() else "_" for c in name)
     d.mkdir(parents=True, exist_ok=True)
@@ -140,18 +149,26 @@ def run_case(name, overrides, mesh, timeout, work):
     scene.write_text(case_text(overrides, mesh))
     (d / "velocity.csv").write_text(VELOCITY_TABLE)
     t0 = time.perf_counter()
+    # SIGTERM at the time limit: the run closes its files and says where it got to
+    p = subprocess.Popen([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(d / "out")],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
     try:
-        r = subprocess.run([sys.executable, "-m", "sealts", "run", str(scene), "-o", str(d / "out")],
-                           capture_output=True, text=True, cwd=ROOT, timeout=timeout)
-        rc, err = r.returncode, r.stderr.strip().splitlines()[-1:] or [""]
+        _, stderr = p.communicate(timeout=timeout)
+        rc, err = p.returncode, stderr.strip().splitlines()[-1:] or [""]
     except subprocess.TimeoutExpired:
+        p.terminate()
+        p.communicate()
         rc, err = None, [f"time limit {timeout:g} s"]
     wall = time.perf_counter() - t0
     row = {"case": name, "status": "finished" if rc == 0 else "FAILED", "wall s": wall}
     summ = d / "out" / "summary.json"
     s = json.loads(summ.read_text()) if summ.exists() else {}
     st = s.get("stroke", s.get("hold", {}))
-    if rc != 0:
+    if rc is None:       # stopped at the time limit: how far, and at what pace
+        last = _last_row(d / "out" / "series.csv")
+        row["why"] = (f"time limit {timeout:g} s at t = {last.get('t', math.nan):.6g} s, "
+                      f"steps of {last.get('dt', math.nan):.2g} s" if last else err[0])
+    elif rc != 0:
         row["why"] = s.get("error", err[0])[:320]
     elif st.get("snapped_at") is not None:
         row["why"] = (f"snapped at t = {st['snapped_at']:.4g} s; snap stabilisation from the "
