@@ -117,3 +117,23 @@ def test_the_films_front_is_held_and_its_edges_stay_dry():
     stroke.update(dry_everywhere, 0.0)
     assert (stroke.wet[dry] == 0.0).all()
     assert load.held == (False, False) and load.wet[first] == 1.0   # step 2's load unchanged
+
+
+def test_the_stress_script_lists_the_operating_grid():
+    """scripts/stress.py --list: the grid is p_in 0-40 MPa (7) x clearance 0 and 0.1 mm x
+    amplitude 1, 100, 2000 mm/s, 42 cases; an unknown factor is one line and exit 1."""
+    script = str(ROOT / "scripts" / "stress.py")
+    r = subprocess.run([sys.executable, script, "--factors", "grid", "--list"],
+                       capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    lines = r.stdout.splitlines()
+    assert len(lines) == 42
+    for p in (0, 1, 5, 10, 20, 30, 40):
+        for c in (0, 0.1):
+            for v in (1, 100, 2000):
+                assert sum(ln.startswith(f"p_in {p} MPa, clearance {c:g} mm, v_max {v} mm/s")
+                           for ln in lines) == 1
+    r = subprocess.run([sys.executable, script, "--factors", "nope", "--list"],
+                       capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 1 and len(r.stderr.strip().splitlines()) == 1
+    assert r.stderr.startswith("stress.py: unknown factor 'nope' (one of pressure, ")
