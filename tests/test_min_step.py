@@ -40,3 +40,42 @@ def test_a_step_at_the_minimum_stops_the_run_and_names_the_unknown():
     assert "the fastest change: unknown 0" in msg
     t = float(msg.split("at t = ")[1].split(" s")[0])
     assert 0.999 < t <= 1.0
+
+
+class FastOscillator(Term):
+    """F = (x' - w y, y' + w x): circles of angular frequency w."""
+
+    def __init__(self, w):
+        self.w = w
+        self.rows = np.array([0, 0, 1, 1])
+        self.cols = np.array([0, 1, 0, 1])
+
+    def add_residual(self, t, u, udot, f):
+        f[0] += udot[0] - self.w * u[1]
+        f[1] += udot[1] + self.w * u[0]
+
+    def jacobian_values(self, t, u, udot, shift):
+        return np.array([shift, -self.w, self.w, shift])
+
+
+def test_a_crawl_stops_the_run_and_says_at_what_pace():
+    """u = (cos wt, -sin wt) with w = 1e5 over 1 s: 16,000 periods, each needing tens of
+    BDF steps at rtol 1e-6, millions in all. The steps neither shrink to the minimum nor
+    finish: after PACE_WINDOW steps the run stops, saying how far they got and what the
+    rest would take. With a window's pace that would finish in time it runs on (w = 1e2)."""
+    from sealts.problem.problem import PACE_LIMIT, PACE_WINDOW
+    p = Problem(2, [FastOscillator(1e5)])
+    p.stop_at_min_step = True
+    with pytest.raises(SolveError) as e:
+        p.transient(np.array([1.0, 0.0]), 0.0, 1.0, 1e-7, rtol=1e-6, atol=1e-9)
+    msg = str(e.value)
+    assert f"the time steps crawl: the last {PACE_WINDOW} advanced t by" in msg
+    need = float(msg.split("would take ")[1].split(" more steps")[0])
+    assert need > PACE_LIMIT
+    assert "the fastest change: unknown" in msg
+    q = Problem(2, [FastOscillator(1e2)])
+    q.stop_at_min_step = True
+    u = q.transient(np.array([1.0, 0.0]), 0.0, 1.0, 1e-4, rtol=1e-6, atol=1e-9)
+    # 16 periods, BDF's phase error accumulating: on the circle, near its point
+    assert np.hypot(*u) == pytest.approx(1.0, abs=1e-2)
+    assert u == pytest.approx([np.cos(100.0), -np.sin(100.0)], abs=1e-2)

@@ -38,6 +38,7 @@ the post-step hooks, the observers and ``gather`` get) are in serial order on ev
 written by its owner only; every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
 (the default parallel preconditioner is ``redundant`` LU).
 """
+from collections import deque
 from dataclasses import asdict
 
 import numpy as np
@@ -49,6 +50,13 @@ from ..core import Counters, SolveError, StepInfo, StepTooSmall
 
 # the solvers in force, by options prefix, as set up last in this process (for the summary)
 SOLVERS = {}
+# a crawl (Problem._check_pace): the last PACE_WINDOW accepted steps' pace would need more
+# than PACE_LIMIT further steps to the end. The paper's cycles take 1,000-8,000 steps in
+# all, and no window of the stress matrix's finished cases projects more than a few
+# thousand; the crawl at 30 MPa and 2000 mm/s (benchmarks/stress.md) projects 0.7-1.8
+# million
+PACE_WINDOW = 2000
+PACE_LIMIT = 1e5
 
 
 def _solver_in_force(snes, ts=None):
@@ -425,6 +433,39 @@ class Problem:
         opts = PETSc.Options(self.prefix or None)
         return opts.getReal(name, default) if opts.hasName(name) else default
 
+    def _fastest_change(self, u, rtol, atol):
+        """"; the fastest change: <unknown>" since the last accepted state ("" without)."""
+        u_prev = self._last_u[0]
+        if u_prev is None:
+            return ""
+        scale = np.asarray(atol, float) + np.asarray(rtol, float) * np.abs(u)
+        change = np.abs(u - u_prev) / np.where(scale > 0, scale, np.inf)
+        i = int(np.argmax(change))
+        what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
+        return f"; the fastest change: {what}"
+
+    def _check_pace(self, t, u, t_end, rtol, atol):
+        """A run whose steps have shrunk so far that, at the pace of its last PACE_WINDOW
+        accepted steps, the rest would take more than PACE_LIMIT further steps, crawls: it
+        would neither finish in any useful time nor stop. Stop it as a stuck step
+        (StepTooSmall, which the stroke answers with its snap stabilisation once) and name
+        the unknown that changed most against its tolerance. Off with
+        ``stop_at_min_step``."""
+        if not self.stop_at_min_step:
+            return
+        times = self._pace
+        times.append(t)
+        if len(times) <= PACE_WINDOW:
+            return
+        span = t - times[0]
+        need = (t_end - t) / span * PACE_WINDOW if span > 0.0 else np.inf
+        if need <= PACE_LIMIT:
+            return
+        raise StepTooSmall(f"the time steps crawl: the last {PACE_WINDOW} advanced t by "
+                           f"{span:.3g} s (to t = {t:.6g} s), and at that pace the "
+                           f"remaining {t_end - t:.4g} s would take {need:.2g} more steps"
+                           f"{self._fastest_change(u, rtol, atol)}", t=t)
+
     def _check_min_step(self, t_prev, t, u, rtol, atol):
         """TSAdapt accepts a step at its minimum size whatever its error (PETSc's basic
         controller): such a step is not an answer but a sign that the solution changes
@@ -438,14 +479,7 @@ class Problem:
         # at the minimum that follows one there, and is no longer, is the controller stuck
         if dt > at_min or last_dt is None or last_dt > at_min or dt > last_dt * (1.0 + 1e-6):
             return
-        u_prev = self._last_u[0]
-        name = ""
-        if u_prev is not None:
-            scale = np.asarray(atol, float) + np.asarray(rtol, float) * np.abs(u)
-            change = np.abs(u - u_prev) / np.where(scale > 0, scale, np.inf)
-            i = int(np.argmax(change))
-            what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
-            name = f"; the fastest change: {what}"
+        name = self._fastest_change(u, rtol, atol)
         raise StepTooSmall(f"time step at its minimum ({self._dt_min:.3g} s) at t = {t:.6g} s: "
                            "the solution changes faster than the error tolerance can follow "
                            f"(a step this small is accepted unchecked){name}", t=t)
@@ -498,6 +532,7 @@ class Problem:
         targets = [s for s in targets if s > t0]      # a resumed run that had finished
         self._dt_min = None
         self._offset = (0, 0)
+        self._pace = deque(maxlen=PACE_WINDOW + 1)    # the last accepted steps' t
         if resume is not None:
             with_history = self.history_terms()
             for k, history in resume["history"].items():
@@ -516,6 +551,8 @@ class Problem:
                 u = self.gather(X).copy()
                 if t_prev is not None and t not in targets:
                     self._check_min_step(t_prev, t, u, rtol, atol)
+                if t_prev is not None:
+                    self._check_pace(t, u, t_end, rtol, atol)
                 last_u[0] = u
                 self.accepted(t, u)
                 info = StepInfo(step + self._offset[0], ts.getTimeStep(),
