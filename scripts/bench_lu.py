@@ -1,11 +1,16 @@
-"""Direct solvers on a Jacobian-like matrix: PETSc's LU against UMFPACK, KLU and SuperLU.
+"""Direct solvers on a Jacobian-like matrix: PETSc's LU (nested-dissection and AMD
+orderings) against UMFPACK, KLU and SuperLU.
 
-The matrix is the 2D plane-strain stiffness of a structured Q1 mesh with nu = 0.49, clamped
-at one edge (5k to 80k unknowns), like the seal's displacement block. For each solver it
-times a symbolic + numeric factorisation and one solve, best of ``--repeat``, and prints a
-markdown table (docs/petsc-build.md keeps the last one). Run:
+The matrices: the 2D plane-strain stiffness of a structured Q1 mesh with nu = 0.49, clamped
+at one edge (5k to 80k unknowns), like the seal's displacement block; with ``--stroke``
+also the default cycle's coupled stroke Jacobian at the stroke's start (seal, film, leakage
+and friction, 2,822 unknowns; mounts and pressurises first, about 20 s). For each solver it
+times the first set-up (symbolic + numeric factorisation and one solve) and a
+refactorisation (numeric factorisation and one solve with the pattern kept: what every
+Newton iteration of a run pays), best of ``--repeat``, and prints markdown tables
+(docs/petsc-build.md keeps the last ones). Run:
 
-    .venv/bin/python scripts/bench_lu.py [--sizes 50 100 200] [--repeat 2]
+    .venv/bin/python scripts/bench_lu.py [--sizes 50 100 200] [--repeat 3] [--stroke]
 """
 import argparse
 import time
@@ -46,8 +51,13 @@ def q1_plane_strain(nx, E=1.0, nu=0.49):
     return ndof, rows, cols, vals
 
 
-def time_solver(A, b, solver, repeat):
-    best = np.inf
+SOLVERS = [("petsc", "nd"), ("petsc", "amd"), ("umfpack", None), ("klu", None),
+           ("superlu", None)]
+
+
+def time_solver(A, b, solver, ordering, repeat):
+    """(first set-up s, refactorisation s, relative residual) of one direct solver."""
+    first = refactor = np.inf
     for _ in range(repeat):
         ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
         ksp.setOperators(A)
@@ -55,41 +65,79 @@ def time_solver(A, b, solver, repeat):
         pc = ksp.getPC()
         pc.setType("lu")
         pc.setFactorSolverType(solver)
-        if solver == "petsc":
-            pc.setFactorOrdering("nd")
+        if ordering:
+            pc.setFactorOrdering(ordering)
         x = b.duplicate()
         t = time.perf_counter()
         ksp.setUp()
         ksp.solve(b, x)
-        best = min(best, time.perf_counter() - t)
+        first = min(first, time.perf_counter() - t)
+        for _ in range(repeat):
+            A.assemble()              # the same pattern, new values: a numeric refactorisation
+            t = time.perf_counter()
+            ksp.setOperators(A)
+            ksp.setUp()
+            ksp.solve(b, x)
+            refactor = min(refactor, time.perf_counter() - t)
         r = b.duplicate()
         A.mult(x, r)
         r.axpy(-1.0, b)
         res = r.norm() / b.norm()
         ksp.destroy()
-    return best, res
+    return first, refactor, res
+
+
+def stroke_jacobian():
+    """The default cycle's stroke Jacobian at the stroke's start (TS shift of a 1e-4 s
+    backward-Euler step)."""
+    import sys
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[1]
+    sys.path[:0] = [str(root), str(root / "tests")]
+    from conftest import scene, stroke_of
+    from sealts.steps import prepare
+    step = stroke_of(prepare(scene("oring_stroke", output={"progress": False})))
+    pb = step.problem
+    X = pb._owned(step.start())
+    Xd = X.duplicate()
+    Xd.set(0.0)
+    pb._assemble_jacobian(0.0, X, Xd, 1e4, pb.J, pb.J)
+    pb.J.assemble()
+    return pb.J
+
+
+def table(matrices, repeat):
+    names = [s if o is None else f"{s} ({o})" for s, o in SOLVERS]
+    print("| matrix | unknowns | " + " | ".join(names) + " |")
+    print("|---" * (len(names) + 2) + "|")
+    for name, A in matrices:
+        b = A.createVecLeft()
+        b.setRandom()
+        cells = []
+        for s, o in SOLVERS:
+            first, again, res = time_solver(A, b, s, o, repeat)
+            cells.append(f"{1e3 * first:.1f} / {1e3 * again:.1f} ms"
+                         + ("" if res < 1e-6 else f" (res {res:.1e})"))
+        print(f"| {name} | {A.getSize()[0]:,} | " + " | ".join(cells) + " |", flush=True)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", type=int, nargs="+", default=[50, 100, 200])
-    ap.add_argument("--repeat", type=int, default=2)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--stroke", action="store_true",
+                    help="also the default cycle's stroke Jacobian (mounts first)")
     args = ap.parse_args()
-    solvers = ["petsc", "umfpack", "klu", "superlu"]
-    print("| unknowns | " + " | ".join(solvers) + " |")
-    print("|---" * (len(solvers) + 1) + "|")
+    matrices = [("stroke Jacobian", stroke_jacobian())] if args.stroke else []
     for nx in args.sizes:
         n, rows, cols, vals = q1_plane_strain(nx)
         A = PETSc.Mat().createAIJ((n, n), comm=PETSc.COMM_SELF)
         A.setPreallocationCOO(rows.astype(PETSc.IntType), cols.astype(PETSc.IntType))
         A.setValuesCOO(vals)
-        b = A.createVecLeft()
-        b.setRandom()
-        cells = []
-        for s in solvers:
-            t, res = time_solver(A, b, s, args.repeat)
-            cells.append(f"{t:.3f} s" + ("" if res < 1e-6 else f" (res {res:.1e})"))
-        print(f"| {n:,} | " + " | ".join(cells) + " |", flush=True)
+        matrices.append((f"Q1 {nx} x {nx}", A))
+    print("first set-up / refactorisation (each with one solve), best of "
+          f"{args.repeat}")
+    table(matrices, args.repeat)
 
 
 if __name__ == "__main__":

@@ -91,6 +91,11 @@ def _init_petsc(argv, scene):
 SOLVER_PREFIXES = ("", "static_", "hold_", "stroke_", "stroke_film_", "stroke_start_")
 
 
+# sealts' own solver options (read by sealts, not by a PETSc object): name -> meaning
+SEALTS_OPTIONS = {"stroke_ts_pressure_atol": "the film pressures' absolute error tolerance "
+                                             "in MPa (sealts.problem.stroke_problem)"}
+
+
 # the solver objects whose options sealts' solvers read when they are set up
 FAMILIES = ("ts", "snes", "ksp", "pc")
 # ... and options of theirs read only while solving (viewers, reports, checks) or by
@@ -121,6 +126,15 @@ def _check_petsc_options(PETSc, given=()):
             ts.setFromOptions()
         finally:
             ts.destroy()
+    for name, meaning in SEALTS_OPTIONS.items():
+        if opts.hasName(name):
+            try:
+                value = opts.getReal(name)
+            except PETSc.Error:
+                value = None
+            if value is None or not value > 0.0:
+                raise SceneError(f"-{name} {opts.getString(name)!r}: {meaning} must be a "
+                                 "positive number")
     for name in given:
         # read, or a deprecated name PETSc replaced by its new one (-ts_dt: -ts_time_step)
         if opts.used(name) or not opts.hasName(name):
@@ -146,6 +160,9 @@ def run(args, command="run"):
         raise SceneError("ihl needs a seal scene file" if scene_path is None
                          else "ihl has no --restart")
     scene = load_scene(scene_path) if scene_path else default_scene()
+    # PETSc first: anything that imports petsc4py before (the restart's check does)
+    # initialises it without the command line's options
+    PETSc = _init_petsc(petsc_args, scene)
     resume = None
     if restart is not None:
         from .steps.run_checkpoint import check_restart
@@ -153,7 +170,6 @@ def run(args, command="run"):
     out = Path(outdir) if outdir else Path("results") / (
         scene.name + ("_ihl" if command == "ihl" else ""))
     _prepare_outdir(out)
-    PETSc = _init_petsc(petsc_args, scene)
     comm = PETSc.COMM_WORLD
     if command == "ihl" and scene.model != "seal":
         raise SceneError("ihl needs a seal scene (model = \"seal\")")

@@ -156,18 +156,27 @@ def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
 
 def test_tolerances_per_unknown_and_from_the_command_line(stroke):
     """The leakage volumes are held to rtol V_c absolutely (V_c = A L h_c, here 2 pi 25 mm
-    x the rod side's length x h_mix), the friction work not at all, every other unknown to
-    rtol and 1e-6; -stroke_ts_rtol / -stroke_ts_atol replace the scene's values."""
+    x the rod side's length x h_mix), the film pressures to rtol and rtol p_ref (p_ref: the
+    largest of p_in and the pressurised seal's peak asperity pressure, Eq. 44 at its gap),
+    the friction work not at all, every other unknown to rtol and 1e-6; -stroke_ts_rtol /
+    -stroke_ts_atol replace the scene's values."""
     from petsc4py import PETSc
     step = stroke[0]
     side = step.side
     assert step.volume_scale == pytest.approx(
         2 * np.pi * 25.0 * (side.Z.max() - side.Z.min()) * 7e-4, rel=1e-6)
+    x = 1.0 - side.gap(0.0, step.U0) / 7e-4              # Eq. 44, h_mix 7e-4, p_mix 15
+    p_s = np.where(x > 0.0, 15.0 / (np.e - 1.0) * x * (np.exp(x) - 1.0), 0.0)
+    assert 1.0 < p_s.max() < 15.0
+    assert step.pressure_scale == pytest.approx(max(1.0, p_s.max()), rel=1e-9)
     rt, at = step.tolerances(1e-3)
     v, w = step.vdofs, step.work.wd if step.work is not None else []
+    p = step.layout.film_dofs
     assert (rt[v] == 0.0).all() and at[v] == pytest.approx(1e-3 * step.volume_scale)
     assert (at[w] >= 1e300).all()
-    rest = np.setdiff1d(np.arange(step.n), np.concatenate([v, np.atleast_1d(w)]).astype(int))
+    assert (rt[p] == 1e-3).all() and at[p] == pytest.approx(1e-3 * step.pressure_scale)
+    rest = np.setdiff1d(np.arange(step.n),
+                        np.concatenate([v, np.atleast_1d(w), p]).astype(int))
     assert (rt[rest] == 1e-3).all() and (at[rest] == 1e-6).all()
     opts = PETSc.Options("stroke_")
     opts["ts_rtol"], opts["ts_atol"] = "1e-5", "1e-9"
@@ -178,3 +187,4 @@ def test_tolerances_per_unknown_and_from_the_command_line(stroke):
         opts.delValue("ts_atol")
     assert (rt[rest] == 1e-5).all() and (at[rest] == 1e-9).all()
     assert at[v] == pytest.approx(1e-5 * step.volume_scale)
+    assert at[p] == pytest.approx(1e-5 * step.pressure_scale)

@@ -399,11 +399,28 @@ class StrokeProblem:
         side = self.side
         return side.area * float(np.ptp(side.Z)) * self.model.law.contact_gap
 
+    @property
+    def pressure_scale(self):
+        """p_ref (MPa): the largest of the sealed pressures p_in, p_out and the peak asperity
+        pressure of the pressurised seal (the dry contact the stroke starts from), the
+        pressure whose fraction rtol each step may err by in the film pressures. A property
+        of the scene and the pressurised state, so a restarted run holds the same."""
+        fl = self.scene.fluid
+        p, _ = self.rod.pressure(0.0, self.U0)
+        return max(fl.p_in, fl.p_out, float(np.max(p)) if p.size else 0.0)
+
     def tolerances(self, rtol, atol=1e-6):
         """TS's local-error tolerances per unknown, (rtol, atol) arrays in the serial
         numbering: each unknown's error e_i is held to atol_i + rtol_i |U_i| in the max norm.
+        The same weights are the Newton test's (:mod:`sealts.problem.newton_test`).
 
-        * displacements (mm), film pressures (MPa): rtol, and atol (1e-6 mm, 1e-6 MPa);
+        * displacements (mm): rtol, and atol (1e-6 mm);
+        * film pressures (MPa): rtol, and atol = rtol p_ref (``pressure_scale``; at least
+          atol, for a scene with neither sealed pressure nor contact). With an atol of
+          1e-6 MPa the film's near-ambient pressures in the outlet wedge (|p| of a few
+          kPa, swinging with the squeeze) set most step sizes at the stick-slide
+          transitions after the start and the reversal, to an error of 1 Pa that no
+          result depends on (benchmarks/stroke_sensitivity.md);
         * the leakage volumes V_in, V_out (mm^3): atol = rtol V_c (``volume_scale``) and no
           relative part. The net leakage is the small difference of two transports of tens
           of mm^3: a tolerance of rtol |V| let every mid-stroke step err by 0.05 mm^3 and
@@ -415,7 +432,8 @@ class StrokeProblem:
           thousands of N mm), and the paper scheme's c0 and qd, algebraic flows.
 
         ``-stroke_ts_rtol`` and ``-stroke_ts_atol`` on the command line replace ``rtol``
-        and ``atol`` here (PETSc would otherwise ignore them beside per-unknown vectors).
+        and ``atol`` here (PETSc would otherwise ignore them beside per-unknown vectors);
+        ``-stroke_ts_pressure_atol`` (MPa) replaces the film pressures' atol.
         """
         from petsc4py import PETSc
         opts = PETSc.Options(self.problem.prefix)
@@ -426,6 +444,9 @@ class StrokeProblem:
             at[self.work.wd] = 1e300
         if self.xdofs is not None:
             at[self.xdofs] = 1e300
+        if self.film is not None:
+            at[self.layout.film_dofs] = opts.getReal(
+                "ts_pressure_atol", max(rtol * self.pressure_scale, atol))
         if self.layout.slip_dofs.size:
             at[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
         if self.vdofs.size:
