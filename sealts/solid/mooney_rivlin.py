@@ -17,40 +17,53 @@ import numpy as np
 from .neo_hooke import det_and_derivatives
 
 
-@numba.njit(cache=True)
-def isochoric_i2(f, c01):
-    """C01 (J^-4/3 I2 - 3), its gradient (5) and Hessian (5x5) in f."""
-    J, dJ, HJ = det_and_derivatives(f)
+@numba.njit(cache=True, inline="always")
+def isochoric_i2_add(f, J, dJ, HJ, c01, P, A, tangent):
+    """C01 (J^-4/3 I2 - 3); its gradient added to P (5) and, with ``tangent``, its Hessian
+    to A (5x5), from J, dJ, HJ of :func:`.neo_hooke.det_into`."""
     F11, F12, F21, F22, F33 = f[0], f[1], f[2], f[3], f[4]
     a = F11 * F22 - F12 * F21
     q = F11 * F11 + F12 * F12 + F21 * F21 + F22 * F22
     I2 = a * a + F33 * F33 * q
-    da = np.array([F22, -F21, -F12, F11, 0.0])
-    dI2 = 2.0 * a * da
-    for i in range(4):
-        dI2[i] += 2.0 * F33 * F33 * f[i]
+    da0, da1, da2, da3 = F22, -F21, -F12, F11
+    dI2 = np.empty(5)
+    dI2[0] = 2.0 * a * da0 + 2.0 * F33 * F33 * F11
+    dI2[1] = 2.0 * a * da1 + 2.0 * F33 * F33 * F12
+    dI2[2] = 2.0 * a * da2 + 2.0 * F33 * F33 * F21
+    dI2[3] = 2.0 * a * da3 + 2.0 * F33 * F33 * F22
     dI2[4] = 2.0 * F33 * q
-    HI2 = np.zeros((5, 5))
-    for i in range(5):
-        for k in range(5):
-            HI2[i, k] = 2.0 * da[i] * da[k]
-    HI2[0, 3] += 2.0 * a
-    HI2[3, 0] += 2.0 * a
-    HI2[1, 2] -= 2.0 * a
-    HI2[2, 1] -= 2.0 * a
-    for i in range(4):
-        HI2[i, i] += 2.0 * F33 * F33
-        HI2[i, 4] += 4.0 * F33 * f[i]
-        HI2[4, i] += 4.0 * F33 * f[i]
-    HI2[4, 4] += 2.0 * q
     g = J ** (-4.0 / 3.0)
     g1 = -(4.0 / 3.0) * g / J                       # dg/dJ
     g2 = (28.0 / 9.0) * g / (J * J)                 # d2g/dJ2
-    psi = c01 * (g * I2 - 3.0)
-    P = c01 * (g * dI2 + I2 * g1 * dJ)
-    A = np.empty((5, 5))
     for i in range(5):
-        for k in range(5):
-            A[i, k] = c01 * (g * HI2[i, k] + g1 * (dJ[i] * dI2[k] + dI2[i] * dJ[k])
-                             + I2 * (g2 * dJ[i] * dJ[k] + g1 * HJ[i, k]))
+        P[i] += c01 * (g * dI2[i] + I2 * g1 * dJ[i])
+    if tangent:
+        da = np.array([da0, da1, da2, da3, 0.0])
+        HI2 = np.empty((5, 5))
+        for i in range(5):
+            for k in range(5):
+                HI2[i, k] = 2.0 * da[i] * da[k]
+        HI2[0, 3] += 2.0 * a
+        HI2[3, 0] += 2.0 * a
+        HI2[1, 2] -= 2.0 * a
+        HI2[2, 1] -= 2.0 * a
+        for i in range(4):
+            HI2[i, i] += 2.0 * F33 * F33
+            HI2[i, 4] += 4.0 * F33 * f[i]
+            HI2[4, i] += 4.0 * F33 * f[i]
+        HI2[4, 4] += 2.0 * q
+        for i in range(5):
+            for k in range(5):
+                A[i, k] += c01 * (g * HI2[i, k] + g1 * (dJ[i] * dI2[k] + dI2[i] * dJ[k])
+                                  + I2 * (g2 * dJ[i] * dJ[k] + g1 * HJ[i, k]))
+    return c01 * (g * I2 - 3.0)
+
+
+@numba.njit(cache=True)
+def isochoric_i2(f, c01):
+    """C01 (J^-4/3 I2 - 3), its gradient (5) and Hessian (5x5) in f."""
+    J, dJ, HJ = det_and_derivatives(f)
+    P = np.zeros(5)
+    A = np.zeros((5, 5))
+    psi = isochoric_i2_add(f, J, dJ, HJ, c01, P, A, True)
     return psi, P, A

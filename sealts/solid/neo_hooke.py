@@ -19,40 +19,65 @@ import numpy as np
 
 
 @numba.njit(cache=True, inline="always")
-def det_and_derivatives(f):
-    """J, dJ/df (5) and d2J/df2 (5x5) for f = (F11, F12, F21, F22, F33)."""
+def det_into(f, dJ, HJ):
+    """J for f = (F11, F12, F21, F22, F33); dJ/df (5) and d2J/df2 (5x5) written into the
+    buffers ``dJ`` and ``HJ`` (the element kernel's, so no Gauss point allocates)."""
     F11, F12, F21, F22, F33 = f[0], f[1], f[2], f[3], f[4]
     a = F11 * F22 - F12 * F21
-    J = a * F33
-    dJ = np.array([F22 * F33, -F21 * F33, -F12 * F33, F11 * F33, a])
-    H = np.zeros((5, 5))
-    H[0, 3] = H[3, 0] = F33
-    H[1, 2] = H[2, 1] = -F33
-    H[0, 4] = H[4, 0] = F22
-    H[3, 4] = H[4, 3] = F11
-    H[1, 4] = H[4, 1] = -F21
-    H[2, 4] = H[4, 2] = -F12
-    return J, dJ, H
+    dJ[0] = F22 * F33
+    dJ[1] = -F21 * F33
+    dJ[2] = -F12 * F33
+    dJ[3] = F11 * F33
+    dJ[4] = a
+    for i in range(5):
+        for k in range(5):
+            HJ[i, k] = 0.0
+    HJ[0, 3] = HJ[3, 0] = F33
+    HJ[1, 2] = HJ[2, 1] = -F33
+    HJ[0, 4] = HJ[4, 0] = F22
+    HJ[3, 4] = HJ[4, 3] = F11
+    HJ[1, 4] = HJ[4, 1] = -F21
+    HJ[2, 4] = HJ[4, 2] = -F12
+    return a * F33
+
+
+@numba.njit(cache=True, inline="always")
+def det_and_derivatives(f):
+    """J, dJ/df (5) and d2J/df2 (5x5) for f = (F11, F12, F21, F22, F33)."""
+    dJ = np.empty(5)
+    HJ = np.empty((5, 5))
+    J = det_into(f, dJ, HJ)
+    return J, dJ, HJ
+
+
+@numba.njit(cache=True, inline="always")
+def isochoric_into(f, J, dJ, HJ, c10, P, A, tangent):
+    """psi_iso = C10 (J^-2/3 I1 - 3); its gradient P (5) and, with ``tangent``, its Hessian
+    A (5x5) in f written into the buffers, from J, dJ, HJ of :func:`det_into`."""
+    I1 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] + f[3] * f[3] + f[4] * f[4]
+    j23 = J ** (-2.0 / 3.0)
+    j53 = j23 / J
+    j83 = j53 / J
+    for i in range(5):
+        P[i] = c10 * (2.0 * j23 * f[i] - (2.0 / 3.0) * j53 * I1 * dJ[i])
+    if tangent:
+        for i in range(5):
+            for k in range(5):
+                A[i, k] = c10 * (
+                    -(4.0 / 3.0) * j53 * (f[i] * dJ[k] + dJ[i] * f[k])
+                    + (10.0 / 9.0) * j83 * I1 * dJ[i] * dJ[k]
+                    - (2.0 / 3.0) * j53 * I1 * HJ[i, k])
+            A[i, i] += c10 * 2.0 * j23
+    return c10 * (j23 * I1 - 3.0)
 
 
 @numba.njit(cache=True)
 def isochoric(f, c10):
     """psi_iso = C10 (J^-2/3 I1 - 3), its gradient P (5) and Hessian A (5x5) in f."""
     J, dJ, HJ = det_and_derivatives(f)
-    I1 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] + f[3] * f[3] + f[4] * f[4]
-    j23 = J ** (-2.0 / 3.0)
-    j53 = j23 / J
-    j83 = j53 / J
-    psi = c10 * (j23 * I1 - 3.0)
-    P = c10 * (2.0 * j23 * f - (2.0 / 3.0) * j53 * I1 * dJ)
+    P = np.empty(5)
     A = np.empty((5, 5))
-    for i in range(5):
-        for k in range(5):
-            A[i, k] = c10 * (
-                -(4.0 / 3.0) * j53 * (f[i] * dJ[k] + dJ[i] * f[k])
-                + (10.0 / 9.0) * j83 * I1 * dJ[i] * dJ[k]
-                - (2.0 / 3.0) * j53 * I1 * HJ[i, k])
-        A[i, i] += c10 * 2.0 * j23
+    psi = isochoric_into(f, J, dJ, HJ, c10, P, A, True)
     return psi, P, A
 
 

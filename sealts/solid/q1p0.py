@@ -25,8 +25,8 @@ import math
 import numba
 import numpy as np
 
-from .mooney_rivlin import isochoric_i2
-from .neo_hooke import det_and_derivatives, isochoric, volumetric
+from .mooney_rivlin import isochoric_i2_add
+from .neo_hooke import det_into, isochoric_into, volumetric
 
 _G = 1.0 / math.sqrt(3.0)
 GAUSS = np.array([[-_G, -_G], [_G, -_G], [_G, _G], [-_G, _G]])
@@ -36,30 +36,26 @@ _ETA = np.array([-1.0, -1.0, 1.0, 1.0])
 
 @numba.njit(cache=True, inline="always")
 def _bt_v(B, v, out, scale):
-    """out += scale * B^T v  (B: 5x8)."""
-    for j in range(8):
-        acc = 0.0
-        for i in range(5):
-            acc += B[i, j] * v[i]
-        out[j] += scale * acc
+    """out += scale * B^T v for a B of :func:`gauss_operators` (5x8): the u_r columns (even)
+    have entries in rows 0, 1, 4 only, the u_z columns (odd) in rows 2, 3."""
+    for a in range(4):
+        j = 2 * a
+        out[j] += scale * (B[0, j] * v[0] + B[1, j] * v[1] + B[4, j] * v[4])
+        out[j + 1] += scale * (B[2, j + 1] * v[2] + B[3, j + 1] * v[3])
 
 
 @numba.njit(cache=True, inline="always")
-def _bt_a_b(B, A, out, scale):
-    """out += scale * B^T A B  (B: 5x8, A: 5x5)."""
-    AB = np.zeros((5, 8))
-    for i in range(5):
-        for k in range(5):
-            a = A[i, k]
-            if a != 0.0:
-                for j in range(8):
-                    AB[i, j] += a * B[k, j]
-    for j in range(8):
+def _bt_a_b(B, A, out, MB):
+    """out += B^T A B for a B of :func:`gauss_operators` (5x8, its zero pattern as in
+    :func:`_bt_v`); A 5x5, MB a 5x8 work buffer."""
+    for j in range(0, 8, 2):
+        for i in range(5):
+            MB[i, j] = A[i, 0] * B[0, j] + A[i, 1] * B[1, j] + A[i, 4] * B[4, j]
+            MB[i, j + 1] = A[i, 2] * B[2, j + 1] + A[i, 3] * B[3, j + 1]
+    for j in range(0, 8, 2):
         for l in range(8):
-            acc = 0.0
-            for i in range(5):
-                acc += B[i, j] * AB[i, l]
-            out[j, l] += scale * acc
+            out[j, l] += B[0, j] * MB[0, l] + B[1, j] * MB[1, l] + B[4, j] * MB[4, l]
+            out[j + 1, l] += B[2, j + 1] * MB[2, l] + B[3, j + 1] * MB[3, l]
 
 
 @numba.njit(cache=True)
@@ -99,70 +95,83 @@ def gauss_operators(X, conn, axisym):
 
 
 @numba.njit(cache=True)
-def element_forces(u, conn, W, B, c10, c01, d1, j_th):
+def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
     """Internal forces r (ne, 8), tangents K (ne, 8, 8) and energy of all elements.
 
     ``c01 = 0`` is Neo-Hooke (the I2 term is skipped), otherwise Mooney-Rivlin.
-    Returns also the Gauss-point f (ne, 4, 5), P (ne, 4, 5) and element pressure U'(theta)
-    and dilatation theta for output and checks. A non-positive J anywhere gives
+    ``tangent=False`` skips K (returned with no elements): a residual alone costs about
+    half. Returns also the Gauss-point f (ne, 4, 5), P (ne, 4, 5) and element pressure
+    U'(theta) and dilatation theta for output and checks. A non-positive J anywhere gives
     ``ok = False`` (inverted element): the caller rejects the Newton step.
+    B as :func:`gauss_operators` builds it (its zero pattern is used). Each Gauss point's
+    tangent is summed as B^T (A + U'(theta) H_J) B, one product, and every work array is
+    allocated once per call.
     """
     ne = conn.shape[0]
     r = np.zeros((ne, 8))
-    K = np.zeros((ne, 8, 8))
+    K = np.zeros((ne if tangent else 0, 8, 8))
     f_all = np.empty((ne, 4, 5))
     P_all = np.empty((ne, 4, 5))
     p_el = np.empty(ne)
     th_el = np.empty(ne)
     energy = 0.0
     ok = True
-    eye = np.array([1.0, 0.0, 0.0, 1.0, 1.0])
+    ue = np.empty(8)
+    b = np.empty(8)
+    dJ = np.empty((4, 5))
+    HJ = np.empty((4, 5, 5))
+    A = np.empty((4, 5, 5))
+    M = np.empty((5, 5))
+    MB = np.empty((5, 8))
     for e in range(ne):
-        ue = np.empty(8)
         for a in range(4):
             ue[2 * a] = u[2 * conn[e, a]]
             ue[2 * a + 1] = u[2 * conn[e, a] + 1]
         V = 0.0
         v = 0.0
-        b = np.zeros(8)
-        HJs = np.empty((4, 5, 5))
+        b[:] = 0.0
         for g in range(4):
             Bg = B[e, g]
-            f = eye.copy()
-            for i in range(5):
-                for j in range(8):
-                    f[i] += Bg[i, j] * ue[j]
-            J, dJ, HJ = det_and_derivatives(f)
+            f = f_all[e, g]
+            f[0] = 1.0 + Bg[0, 0] * ue[0] + Bg[0, 2] * ue[2] + Bg[0, 4] * ue[4] + Bg[0, 6] * ue[6]
+            f[1] = Bg[1, 0] * ue[0] + Bg[1, 2] * ue[2] + Bg[1, 4] * ue[4] + Bg[1, 6] * ue[6]
+            f[2] = Bg[2, 1] * ue[1] + Bg[2, 3] * ue[3] + Bg[2, 5] * ue[5] + Bg[2, 7] * ue[7]
+            f[3] = 1.0 + Bg[3, 1] * ue[1] + Bg[3, 3] * ue[3] + Bg[3, 5] * ue[5] + Bg[3, 7] * ue[7]
+            f[4] = 1.0 + Bg[4, 0] * ue[0] + Bg[4, 2] * ue[2] + Bg[4, 4] * ue[4] + Bg[4, 6] * ue[6]
+            J = det_into(f, dJ[g], HJ[g])
             if J <= 0.0:
                 ok = False
                 J = 1e-300
-            psi, P, A = isochoric(f, c10)
+            P = P_all[e, g]
+            psi = isochoric_into(f, J, dJ[g], HJ[g], c10, P, A[g], tangent)
             if c01 != 0.0:
-                psi2, P2, A2 = isochoric_i2(f, c01)
-                psi += psi2
-                P += P2
-                A += A2
+                psi += isochoric_i2_add(f, J, dJ[g], HJ[g], c01, P, A[g], tangent)
             w = W[e, g]
             energy += w * psi
             _bt_v(Bg, P, r[e], w)
-            _bt_a_b(Bg, A, K[e], w)
-            _bt_v(Bg, dJ, b, w)
-            HJs[g] = HJ
+            _bt_v(Bg, dJ[g], b, w)
             V += w
             v += w * J
-            f_all[e, g] = f
-            P_all[e, g] = P
         theta = v / V
         U, dU, d2U = volumetric(theta, d1, j_th)
         energy += V * U
-        r[e] += dU * b
-        for g in range(4):
-            _bt_a_b(B[e, g], HJs[g], K[e], W[e, g] * dU)
         for j in range(8):
-            for l in range(8):
-                K[e, j, l] += d2U / V * b[j] * b[l]
+            r[e, j] += dU * b[j]
         p_el[e] = dU
         th_el[e] = theta
+        if not tangent:
+            continue
+        Ke = K[e]
+        for g in range(4):
+            w = W[e, g]
+            for i in range(5):
+                for k in range(5):
+                    M[i, k] = w * (A[g, i, k] + dU * HJ[g, i, k])
+            _bt_a_b(B[e, g], M, Ke, MB)
+        c = d2U / V
+        for j in range(8):
+            for l in range(8):
+                Ke[j, l] += c * b[j] * b[l]
     return r, K, energy, ok, f_all, P_all, p_el, th_el
 
 

@@ -63,17 +63,20 @@ class SolidTerm(Term):
         self.dofs = self.udofs[self.conn].reshape(self.conn.shape[0], 8)
         self.rows = np.repeat(self.dofs, 8, axis=1).ravel()
         self.cols = np.tile(self.dofs, (1, 8)).ravel()
-        self._cache_key = None
+        self._cache_key, self._tangent = None, False
 
-    def _evaluate(self, u, t=None):
+    def _evaluate(self, u, t=None, tangent=True):
+        """The element kernel's output at u, kept for the next call at the same u (a
+        residual's evaluation serves the Jacobian's at the same state); ``tangent=False``
+        (energy and output) skips the tangents."""
         j_th = self.material.j_th if t is None else self.material.j_th_at(self.heating(t))
         us = u[self.udofs].ravel()
         key = (j_th, hash(us.tobytes()))
-        if key != self._cache_key:
+        if key != self._cache_key or (tangent and not self._tangent):
             m = self.material
             self._out = element_forces(us, self.conn, self.W, self.B, m.c10, m.c01, m.d1,
-                                       j_th)
-            self._cache_key = key
+                                       j_th, tangent)
+            self._cache_key, self._tangent = key, tangent
         return self._out
 
     def add_residual(self, t, u, udot, f):
@@ -87,9 +90,9 @@ class SolidTerm(Term):
         return self._evaluate(u, t)[1].ravel()
 
     def energy(self, u):
-        return self._evaluate(u)[2]
+        return self._evaluate(u, tangent=False)[2]
 
     def state(self, u):
         """Gauss-point f, P, element pressure term U'(theta) and dilatation theta."""
-        _, _, _, _, f, P, p, th = self._evaluate(u)
+        _, _, _, _, f, P, p, th = self._evaluate(u, tangent=False)
         return f, P, p, th
