@@ -61,7 +61,10 @@ def test_inverted_element_is_reported():
     W, B, _ = gauss_operators(X, conn, True)
     u = np.zeros(8)
     u[2] = -2.0  # node 1 pulled through node 0
-    assert not element_forces(u, conn, W, B, 1.0, 0.0, 0.001, 1.0)[3]
+    # Neo-Hooke and Mooney-Rivlin, with and without tangents: reported, never raised
+    for c01 in (0.0, 0.3):
+        for tangent in (True, False):
+            assert not element_forces(u, conn, W, B, 1.0, c01, 0.001, 1.0, tangent)[3]
 
 
 def solve_static(term, n, fixed, values, loads=()):
