@@ -57,7 +57,11 @@ def test_equal_pressures_pressurise_symmetrically(states):
     assert abs(axial) < 1e-9 * abs(radial)
     # each fluid wets as much of the loop as the other, and both wet some of it
     a, b = (np.asarray(f.reach) for f in load.loads)
-    assert sorted(a) == pytest.approx(sorted(b), abs=1e-9) and a.min() > 0.0
+    # the displacements mirror to Newton's tolerance (1e-9 of their scale, above); the
+    # reach, an interpolation of the wall's contact pressure along an edge, amplifies that
+    # (7e-10 of it measured with the solid kernel of 2026-12-03, whose tangents differ in
+    # the last bit and so Newton's path)
+    assert sorted(a) == pytest.approx(sorted(b), rel=1e-8) and a.min() > 0.0
     # neither wets the rod contact: no edge is wetted by both (check_blow_by)
     assert not ((load.loads[0].wet > 0) & (load.loads[1].wet > 0)).any()
 
