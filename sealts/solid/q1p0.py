@@ -35,6 +35,17 @@ _ETA = np.array([-1.0, -1.0, 1.0, 1.0])
 
 
 @numba.njit(cache=True, inline="always")
+def deformation_into(B, ue, f):
+    """f = (F11, F12, F21, F22, F33) = I + B u_e into f, for a B of :func:`gauss_operators`
+    (u_r columns even, u_z columns odd)."""
+    f[0] = 1.0 + B[0, 0] * ue[0] + B[0, 2] * ue[2] + B[0, 4] * ue[4] + B[0, 6] * ue[6]
+    f[1] = B[1, 0] * ue[0] + B[1, 2] * ue[2] + B[1, 4] * ue[4] + B[1, 6] * ue[6]
+    f[2] = B[2, 1] * ue[1] + B[2, 3] * ue[3] + B[2, 5] * ue[5] + B[2, 7] * ue[7]
+    f[3] = 1.0 + B[3, 1] * ue[1] + B[3, 3] * ue[3] + B[3, 5] * ue[5] + B[3, 7] * ue[7]
+    f[4] = 1.0 + B[4, 0] * ue[0] + B[4, 2] * ue[2] + B[4, 4] * ue[4] + B[4, 6] * ue[6]
+
+
+@numba.njit(cache=True, inline="always")
 def _bt_v(B, v, out, scale):
     """out += scale * B^T v for a B of :func:`gauss_operators` (5x8): the u_r columns (even)
     have entries in rows 0, 1, 4 only, the u_z columns (odd) in rows 2, 3."""
@@ -133,11 +144,7 @@ def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
         for g in range(4):
             Bg = B[e, g]
             f = f_all[e, g]
-            f[0] = 1.0 + Bg[0, 0] * ue[0] + Bg[0, 2] * ue[2] + Bg[0, 4] * ue[4] + Bg[0, 6] * ue[6]
-            f[1] = Bg[1, 0] * ue[0] + Bg[1, 2] * ue[2] + Bg[1, 4] * ue[4] + Bg[1, 6] * ue[6]
-            f[2] = Bg[2, 1] * ue[1] + Bg[2, 3] * ue[3] + Bg[2, 5] * ue[5] + Bg[2, 7] * ue[7]
-            f[3] = 1.0 + Bg[3, 1] * ue[1] + Bg[3, 3] * ue[3] + Bg[3, 5] * ue[5] + Bg[3, 7] * ue[7]
-            f[4] = 1.0 + Bg[4, 0] * ue[0] + Bg[4, 2] * ue[2] + Bg[4, 4] * ue[4] + Bg[4, 6] * ue[6]
+            deformation_into(Bg, ue, f)
             J = det_into(f, dJ[g], HJ[g])
             if J <= 0.0:
                 ok = False

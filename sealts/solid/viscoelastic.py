@@ -34,18 +34,19 @@ import numba
 import numpy as np
 
 from ..core import Term
-from .mooney_rivlin import isochoric_i2
-from .neo_hooke import isochoric
+from .mooney_rivlin import isochoric_i2_add
+from .neo_hooke import det_into, isochoric_into
+from .q1p0 import _bt_a_b, _bt_v, deformation_into
 
 
-@numba.njit(cache=True)
-def iso_pk2(f, c10, c01):
-    """S_iso = F^-1 dpsi_iso/dF as (S11, S22, S33, S12), and its derivative (4x5) in f."""
-    _, P, A = isochoric(f, c10)
+@numba.njit(cache=True, inline="always")
+def iso_pk2_into(f, c10, c01, dJ, HJ, P, A, S, dS):
+    """S_iso = F^-1 dpsi_iso/dF as (S11, S22, S33, S12) into S (4), and its derivative in f
+    into dS (4x5); dJ, HJ, P, A: work buffers (5, 5x5, 5, 5x5)."""
+    J = det_into(f, dJ, HJ)
+    isochoric_into(f, J, dJ, HJ, c10, P, A, True)
     if c01 != 0.0:
-        _, P2, A2 = isochoric_i2(f, c01)
-        P += P2
-        A += A2
+        isochoric_i2_add(f, J, dJ, HJ, c01, P, A, True)
     a = f[0] * f[3] - f[1] * f[2]
     i00, i01, i10, i11 = f[3] / a, -f[1] / a, -f[2] / a, f[0] / a
     # S (2x2) = a^-1 P2x2, P2x2 = [[P0, P1], [P2, P3]]
@@ -53,8 +54,7 @@ def iso_pk2(f, c10, c01):
     s12 = i00 * P[1] + i01 * P[3]
     s21 = i10 * P[0] + i11 * P[2]
     s22 = i10 * P[1] + i11 * P[3]
-    S = np.array([s11, s22, P[4] / f[4], 0.5 * (s12 + s21)])
-    dS = np.zeros((4, 5))
+    S[0], S[1], S[2], S[3] = s11, s22, P[4] / f[4], 0.5 * (s12 + s21)
     for k in range(5):
         # d(a^-1 P) = a^-1 (dP - da S), da = unit entry k (k < 4)
         d0, d1, d2, d3 = A[0, k], A[1, k], A[2, k], A[3, k]
@@ -74,38 +74,51 @@ def iso_pk2(f, c10, c01):
         dS[1, k] = i10 * d1 + i11 * d3
         dS[3, k] = 0.5 * (i00 * d1 + i01 * d3 + i10 * d0 + i11 * d2)
         dS[2, k] = (A[4, k] - (S[2] if k == 4 else 0.0)) / f[4]
+
+
+@numba.njit(cache=True)
+def iso_pk2(f, c10, c01):
+    """S_iso = F^-1 dpsi_iso/dF as (S11, S22, S33, S12), and its derivative (4x5) in f."""
+    S, dS = np.empty(4), np.empty((4, 5))
+    iso_pk2_into(f, c10, c01, np.empty(5), np.empty((5, 5)), np.empty(5),
+                 np.empty((5, 5)), S, dS)
     return S, dS
 
 
 @numba.njit(cache=True, inline="always")
-def _pk1(f, H):
+def _pk1_into(f, H, P):
     """P = L(f) H for the symmetric H = (H11, H22, H33, H12)."""
-    return np.array([f[0] * H[0] + f[1] * H[3], f[0] * H[3] + f[1] * H[1],
-                     f[2] * H[0] + f[3] * H[3], f[2] * H[3] + f[3] * H[1], f[4] * H[2]])
+    P[0] = f[0] * H[0] + f[1] * H[3]
+    P[1] = f[0] * H[3] + f[1] * H[1]
+    P[2] = f[2] * H[0] + f[3] * H[3]
+    P[3] = f[2] * H[3] + f[3] * H[1]
+    P[4] = f[4] * H[2]
 
 
 @numba.njit(cache=True, inline="always")
-def _pk1_by_f(H):
-    """M = dP/df at fixed H (5x5)."""
-    M = np.zeros((5, 5))
-    M[0, 0], M[0, 1] = H[0], H[3]
-    M[1, 0], M[1, 1] = H[3], H[1]
-    M[2, 2], M[2, 3] = H[0], H[3]
-    M[3, 2], M[3, 3] = H[3], H[1]
-    M[4, 4] = H[2]
-    return M
+def _pk1_by_f_into(H, scale, M):
+    """M = scale dP/df at fixed H (5x5)."""
+    for i in range(5):
+        for k in range(5):
+            M[i, k] = 0.0
+    M[0, 0], M[0, 1] = scale * H[0], scale * H[3]
+    M[1, 0], M[1, 1] = scale * H[3], scale * H[1]
+    M[2, 2], M[2, 3] = scale * H[0], scale * H[3]
+    M[3, 2], M[3, 3] = scale * H[3], scale * H[1]
+    M[4, 4] = scale * H[2]
 
 
 @numba.njit(cache=True, inline="always")
-def _pk1_by_h(f):
+def _pk1_by_h_into(f, L):
     """L = dP/dH (5x4)."""
-    L = np.zeros((5, 4))
+    for i in range(5):
+        for c in range(4):
+            L[i, c] = 0.0
     L[0, 0], L[0, 3] = f[0], f[1]
     L[1, 3], L[1, 1] = f[0], f[1]
     L[2, 0], L[2, 3] = f[2], f[3]
     L[3, 3], L[3, 1] = f[2], f[3]
     L[4, 2] = f[4]
-    return L
 
 
 @numba.njit(cache=True)
@@ -113,7 +126,8 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift):
     """All elements at once. u node-major displacements; H, Hdot (ne, 4, na, 4) active
     internal variables and rates; Hfrozen (ne, 4, 4) = sum_frozen g_i H_i(0); tau (na,) the
     shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4), K_uu (ne, 8, 8),
-    K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na) (times the identity)."""
+    K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na) (times the identity). B as :func:`.q1p0.gauss_operators` builds it
+    (its zero pattern is used); every work array is allocated once per call."""
     ne, na = conn.shape[0], g.shape[0]
     ru = np.zeros((ne, 8))
     rH = np.zeros((ne, 4, na, 4))
@@ -121,59 +135,38 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift):
     KuH = np.zeros((ne, 4, na, 8, 4))
     KHu = np.zeros((ne, 4, na, 4, 8))
     KHH = np.zeros((ne, 4, na))
+    ue, f, Htot, P = np.empty(8), np.empty(5), np.empty(4), np.empty(5)
+    M, MB = np.empty((5, 5)), np.empty((5, 8))
+    S, dS, L = np.empty(4), np.empty((4, 5)), np.empty((5, 4))
+    BtL, dSB = np.empty((8, 4)), np.empty((4, 8))
+    dJ, HJ, Pi, Ai = np.empty(5), np.empty((5, 5)), np.empty(5), np.empty((5, 5))
     for e in range(ne):
-        ue = np.empty(8)
         for a in range(4):
             ue[2 * a] = u[2 * conn[e, a]]
             ue[2 * a + 1] = u[2 * conn[e, a] + 1]
         for q in range(4):
             Bq = B[e, q]
             w = W[e, q]
-            f = np.array([1.0, 0.0, 0.0, 1.0, 1.0])
-            for i in range(5):
-                for j in range(8):
-                    f[i] += Bq[i, j] * ue[j]
-            Htot = Hfrozen[e, q].copy()
+            deformation_into(Bq, ue, f)
+            for c in range(4):
+                Htot[c] = Hfrozen[e, q, c]
             for k in range(na):
                 for c in range(4):
                     Htot[c] += g[k] * H[e, q, k, c]
-            P = _pk1(f, Htot)
-            M = _pk1_by_f(Htot)
-            for j in range(8):
-                acc = 0.0
-                for i in range(5):
-                    acc += Bq[i, j] * P[i]
-                ru[e, j] -= w * acc
-            MB = np.zeros((5, 8))
-            for i in range(5):
-                for m in range(5):
-                    if M[i, m] != 0.0:
-                        for j in range(8):
-                            MB[i, j] += M[i, m] * Bq[m, j]
-            for j in range(8):
-                for l in range(8):
-                    acc = 0.0
-                    for i in range(5):
-                        acc += Bq[i, j] * MB[i, l]
-                    Kuu[e, j, l] -= w * acc
+            _pk1_into(f, Htot, P)
+            _bt_v(Bq, P, ru[e], -w)
+            _pk1_by_f_into(Htot, -w, M)
+            _bt_a_b(Bq, M, Kuu[e], MB)
             if na == 0:
                 continue
-            S, dS = iso_pk2(f, c10, c01)
-            L = _pk1_by_h(f)
-            BtL = np.zeros((8, 4))
-            for j in range(8):
+            iso_pk2_into(f, c10, c01, dJ, HJ, Pi, Ai, S, dS)
+            _pk1_by_h_into(f, L)
+            for j in range(0, 8, 2):       # B^T L and dS B on B's zero pattern
                 for c in range(4):
-                    acc = 0.0
-                    for i in range(5):
-                        acc += Bq[i, j] * L[i, c]
-                    BtL[j, c] = acc
-            dSB = np.zeros((4, 8))
-            for c in range(4):
-                for j in range(8):
-                    acc = 0.0
-                    for i in range(5):
-                        acc += dS[c, i] * Bq[i, j]
-                    dSB[c, j] = acc
+                    BtL[j, c] = Bq[0, j] * L[0, c] + Bq[1, j] * L[1, c] + Bq[4, j] * L[4, c]
+                    BtL[j + 1, c] = Bq[2, j + 1] * L[2, c] + Bq[3, j + 1] * L[3, c]
+                    dSB[c, j] = dS[c, 0] * Bq[0, j] + dS[c, 1] * Bq[1, j] + dS[c, 4] * Bq[4, j]
+                    dSB[c, j + 1] = dS[c, 2] * Bq[2, j + 1] + dS[c, 3] * Bq[3, j + 1]
             for k in range(na):
                 gw = g[k] * w
                 for c in range(4):
