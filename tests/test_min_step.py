@@ -79,3 +79,38 @@ def test_a_crawl_stops_the_run_and_says_at_what_pace():
     # 16 periods, BDF's phase error accumulating: on the circle, near its point
     assert np.hypot(*u) == pytest.approx(1.0, abs=1e-2)
     assert u == pytest.approx([np.cos(100.0), -np.sin(100.0)], abs=1e-2)
+
+
+class Defective(BlowUp):
+    """BlowUp whose residual (or Jacobian) raises a Python error of its own from t = 0.5 on:
+    a defect in a term, not a physical stop."""
+
+    def __init__(self, n, where):
+        super().__init__(n)
+        self.where = where
+
+    def add_residual(self, t, u, udot, f):
+        if self.where == "residual" and t > 0.5:
+            raise ValueError("a defect in the term")
+        super().add_residual(t, u, udot, f)
+
+    def jacobian_values(self, t, u, udot, shift):
+        if self.where == "Jacobian" and t > 0.5:
+            raise ZeroDivisionError("division by zero")
+        return super().jacobian_values(t, u, udot, shift)
+
+
+@pytest.mark.parametrize("where", ["residual", "Jacobian"])
+def test_a_terms_own_exception_is_named_in_one_line(where):
+    """Not PETSc's bare "error 101": the callback, t and the exception (both solvers)."""
+    p = Problem(1, [Defective(1, where)])
+    with pytest.raises(SolveError) as e:
+        p.transient(np.ones(1), 0.0, 0.9, 1e-4, rtol=1e-6, atol=1e-9)
+    msg = str(e.value)
+    assert msg.startswith(f"the {where} at t = 0.5") and "\n" not in msg
+    assert ("ValueError: a defect in the term" if where == "residual"
+            else "ZeroDivisionError: division by zero") in msg
+    p.t_steady = 0.75
+    with pytest.raises(SolveError) as e:
+        p.solve_steady(np.ones(1), t=0.75)
+    assert str(e.value).startswith(f"the {where} at t = 0.75 s raised")

@@ -112,6 +112,7 @@ class Problem:
         self.fields = dict(fields or {})
         self.counters = Counters()
         self._set_defaults = []       # options set by _default_option, dropped after use
+        self._callback_error = None   # a term's exception in a callback (_guarded)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
@@ -253,19 +254,41 @@ class Problem:
             J.assemble()
         self.counters.jacobians += 1
 
+    def _guarded(self, what, t, assemble, *args):
+        """Run a callback's assembly; an exception of a term's own (not a SolveError or an
+        interrupt, which the run handles) is kept as a one-line SolveError naming it, for
+        :meth:`_callback_failure` to raise once PETSc has unwound (PETSc itself reports
+        it only as its error 101)."""
+        try:
+            assemble(*args)
+        except (SolveError, interrupt.Interrupted):
+            raise
+        except Exception as e:
+            if self._callback_error is None:
+                self._callback_error = SolveError(
+                    f"the {what} at t = {t:.6g} s raised {type(e).__name__}: {e}")
+            raise
+
+    def _callback_failure(self):
+        """The SolveError of a callback's exception (:meth:`_guarded`), once, or None."""
+        err, self._callback_error = self._callback_error, None
+        return err
+
     def ifunction(self, ts, t, U, Udot, F):
-        self._assemble_residual(t, U, Udot, F)
+        self._guarded("residual", t, self._assemble_residual, t, U, Udot, F)
         self.counters.residuals += 1
 
     def ijacobian(self, ts, t, U, Udot, shift, J, P):
-        self._assemble_jacobian(t, U, Udot, shift, J, P)
+        self._guarded("Jacobian", t, self._assemble_jacobian, t, U, Udot, shift, J, P)
 
     def snes_function(self, snes, U, F):
-        self._assemble_residual(self.t_steady, U, None, F)
+        self._guarded("residual", self.t_steady, self._assemble_residual, self.t_steady, U,
+                      None, F)
         self.counters.residuals += 1
 
     def snes_jacobian(self, snes, U, J, P):
-        self._assemble_jacobian(self.t_steady, U, None, 0.0, J, P)
+        self._guarded("Jacobian", self.t_steady, self._assemble_jacobian, self.t_steady, U,
+                      None, 0.0, J, P)
 
     # ---- solver set-up ---------------------------------------------------------------------
     def _default_linear_solver(self, ksp):
@@ -412,6 +435,9 @@ class Problem:
             snes.solve(None, X)
         except PETSc.Error:
             interrupt.check()         # a signal that ended the solve from inside a callback
+            err = self._callback_failure()
+            if err is not None:
+                raise err from None
             raise
         interrupt.check(self.comm)
         reason = snes.getConvergedReason()
@@ -585,6 +611,9 @@ class Problem:
                     if raised:       # a hook's or observer's own verdict (one line) stands
                         raise raised[0] from None
                     interrupt.check()
+                    err = self._callback_failure()
+                    if err is not None:
+                        raise err from None
                     raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
                                      f"(PETSc error {e.ierr}); see the PETSc message above"
                                      ) from None
