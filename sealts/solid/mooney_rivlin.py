@@ -14,7 +14,7 @@ Neo-Hooke part and skips them when C01 = 0.
 import numba
 import numpy as np
 
-from .neo_hooke import det_and_derivatives
+from .neo_hooke import det_into, isochoric_into
 
 
 @numba.njit(cache=True, inline="always")
@@ -60,10 +60,12 @@ def isochoric_i2_add(f, J, dJ, HJ, c01, P, A, tangent):
 
 
 @numba.njit(cache=True)
-def isochoric_i2(f, c01):
-    """C01 (J^-4/3 I2 - 3), its gradient (5) and Hessian (5x5) in f."""
-    J, dJ, HJ = det_and_derivatives(f)
-    P = np.zeros(5)
-    A = np.zeros((5, 5))
-    psi = isochoric_i2_add(f, J, dJ, HJ, c01, P, A, True)
+def isochoric(f, c10, c01):
+    """The whole isochoric energy C10 (I1bar - 3) + C01 (I2bar - 3), its gradient P (5) and
+    Hessian A (5x5) in f (allocating; the kernels use the buffer forms)."""
+    dJ, HJ, P, A = np.empty(5), np.empty((5, 5)), np.empty(5), np.empty((5, 5))
+    J = det_into(f, dJ, HJ)
+    psi = isochoric_into(f, J, dJ, HJ, c10, P, A, True)
+    if c01 != 0.0:
+        psi += isochoric_i2_add(f, J, dJ, HJ, c01, P, A, True)
     return psi, P, A

@@ -42,15 +42,6 @@ def det_into(f, dJ, HJ):
 
 
 @numba.njit(cache=True, inline="always")
-def det_and_derivatives(f):
-    """J, dJ/df (5) and d2J/df2 (5x5) for f = (F11, F12, F21, F22, F33)."""
-    dJ = np.empty(5)
-    HJ = np.empty((5, 5))
-    J = det_into(f, dJ, HJ)
-    return J, dJ, HJ
-
-
-@numba.njit(cache=True, inline="always")
 def isochoric_into(f, J, dJ, HJ, c10, P, A, tangent):
     """psi_iso = C10 (J^-2/3 I1 - 3); its gradient P (5) and, with ``tangent``, its Hessian
     A (5x5) in f written into the buffers, from J, dJ, HJ of :func:`det_into`."""
@@ -69,16 +60,6 @@ def isochoric_into(f, J, dJ, HJ, c10, P, A, tangent):
                     - (2.0 / 3.0) * j53 * I1 * HJ[i, k])
             A[i, i] += c10 * 2.0 * j23
     return c10 * (j23 * I1 - 3.0)
-
-
-@numba.njit(cache=True)
-def isochoric(f, c10):
-    """psi_iso = C10 (J^-2/3 I1 - 3), its gradient P (5) and Hessian A (5x5) in f."""
-    J, dJ, HJ = det_and_derivatives(f)
-    P = np.empty(5)
-    A = np.empty((5, 5))
-    psi = isochoric_into(f, J, dJ, HJ, c10, P, A, True)
-    return psi, P, A
 
 
 @numba.njit(cache=True, inline="always")
