@@ -50,6 +50,11 @@ def _split_run_args(args):
             outdir = a.split("=", 1)[1]
         elif a.startswith("--restart="):
             restart = a.split("=", 1)[1]
+        elif a.startswith("--"):
+            # PETSc reads "--ts_rtol" as no option at all: the run would go on without it
+            raise SceneError(f"unknown option {a.split('=', 1)[0]}: sealts run takes -o "
+                             "OUTDIR and --restart OUTDIR; PETSc options take one dash "
+                             f"(-{a.lstrip('-').split('=', 1)[0]})")
         elif (a.endswith(".toml") or i == 0) and not a.startswith("-"):
             if scene is not None:
                 raise SceneError(f"two scene files given: {scene} and {a}")
