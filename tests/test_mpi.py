@@ -106,7 +106,8 @@ def test_viscoelastic_hold_on_two_ranks(tmp_path):
                        mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
                        viscoelastic={"prony": "custom", "prony_g": [0.5, 0.3],
                                      "prony_tau": [0.01, 1.0], "t_min": 1e-3},
-                       hold={"t_end": 0.05})
+                       hold={"t_end": 0.05},
+                       start={"cache": False})     # the 2 ranks pressurise, not the cache
     cfg = tmp_path / "hold.toml"
     cfg.write_text(text)
     out = {n: _summary(n, cfg, tmp_path / f"r{n}", timeout=900) for n in (1, 2)}
@@ -136,7 +137,8 @@ def test_stroke_on_two_ranks_matches_one(tmp_path, viscoelastic):
     text = config_text("oring_stroke",
                        mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
                        stroke={"velocity": "ramp-hold", "t_ramp": 0.01, "v_max": 100.0,
-                               "t_end": 0.02, "output_times": []}, **ve)
+                               "t_end": 0.02, "output_times": []},
+                       start={"cache": False}, **ve)   # the 2 ranks mount, not the cache
     cfg = tmp_path / "stroke.toml"
     cfg.write_text(text)
     out = {n: _summary(n, cfg, tmp_path / f"r{n}") for n in (1, 2)}

@@ -54,7 +54,8 @@ def runs(tmp_path_factory):
     d = tmp_path_factory.mktemp("restart")
     text = config_text("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4,
                                              "cache": str(ROOT / "meshes")},
-                       output={"plot": False})
+                       output={"plot": False},
+                       start={"cache": False})     # both runs mount: equal counts too
     scene = d / "coarse.toml"
     scene.write_text(text)
     r = _sealts(scene, "-o", d / "a")

@@ -48,10 +48,10 @@ def test_steps_for_each_kind_of_scene(tmp_path):
     assert names(scene("slider")) == ["TransientFilm"]
     assert names(scene("oring_mount", mesh=cache)) == ["Mount", "Checkpoint"]
     stroke = scene("oring_stroke", mesh=cache)
-    assert names(stroke) == ["Mount", "Pressurise", "Checkpoint", "Stroke"]
-    assert names(stroke, "ihl") == ["Mount", "Pressurise", "Ihl"]
-    assert names(scene("oring_hold", mesh=cache)) == ["Mount", "Pressurise", "Checkpoint",
-                                                      "Hold"]
+    assert names(stroke) == ["Mount", "Pressurise", "SaveToCache", "Checkpoint", "Stroke"]
+    assert names(stroke, "ihl") == ["Mount", "Pressurise", "SaveToCache", "Ihl"]
+    assert names(scene("oring_hold", mesh=cache)) == ["Mount", "Pressurise", "SaveToCache",
+                                                      "Checkpoint", "Hold"]
     state = tmp_path / "state.h5"
     state.write_bytes(b"")
     assert names(scene("oring_stroke", mesh=cache, start={"state": str(state)})) == \

@@ -41,6 +41,22 @@ LEGACY = ("profiles.csv", "series.csv", "series.h5", "hold_profiles.csv", "strok
 MANIFEST = "manifest.json"
 
 
+def write_h5(target, arrays, attrs):
+    """An HDF5 file of named arrays and scalar attributes at ``target``, whole: written to
+    a temporary file beside it and renamed into place, so a reader never sees half of it."""
+    import h5py
+    target = Path(target)
+    tmp = target.with_name(target.name + f".{os.getpid()}.tmp")
+    try:
+        with h5py.File(tmp, "w") as f:
+            for k, v in arrays.items():
+                f.create_dataset(k, data=np.asarray(v))
+            for k, v in attrs.items():
+                f.attrs[k] = v
+        os.replace(tmp, target)
+    finally:
+        tmp.unlink(missing_ok=True)
+
 class Writer:
     def __init__(self, outdir, comm, plots=True, keep=(), resume=False):
         """``keep``: paths the run reads (a ``[start] state`` file), never deleted.
@@ -144,15 +160,7 @@ class Writer:
         file renamed into place, so a reader never sees half a state)."""
         if not self.root:
             return
-        import h5py
-        target = self.path(name)
-        tmp = self.dir / (name + ".tmp")
-        with h5py.File(tmp, "w") as f:
-            for k, v in arrays.items():
-                f.create_dataset(k, data=np.asarray(v))
-            for k, v in attrs.items():
-                f.attrs[k] = v
-        os.replace(tmp, target)
+        write_h5(self.path(name), arrays, attrs)
 
     def summary(self, data):
         if not self.root:

@@ -257,6 +257,9 @@ class Stroke:
 class Start:
     state: str = option("", doc="model = seal: start from a state.h5 written by an earlier run "
                                 "(its mounted and pressurised seal) instead of steps 1-2")
+    cache: bool = option(True, doc="model = seal: keep the state of steps 1-2 under "
+                                   "<mesh.cache>/states and reuse it in a later run with "
+                                   "the same inputs and code (sealts/steps/state_cache.py)")
 
 
 @dataclass(frozen=True)

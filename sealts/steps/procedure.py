@@ -1,6 +1,7 @@
 """A scene's run as a list of steps (docs/design.md).
 
-    seal:  [Mount, Pressurise (p_in != 0), Checkpoint] or [Restart],
+    seal:  [Mount, Pressurise (p_in != 0), SaveToCache, Checkpoint] or [Restart]
+           (a [start] state, or the state cache: sealts/steps/state_cache.py),
            then Hold (hold.p_end) or Stroke (stroke.velocity);
            --restart OUTDIR: [Restart, Hold or Stroke] from OUTDIR's checkpoint
     ihl:   [Mount, Pressurise (p_in != 0)] or [Restart], then Ihl
@@ -24,29 +25,36 @@ from .mount import Mount
 from .pressurise import Pressurise
 from .restart import Restart
 from .state import RunState
+from .state_cache import SaveToCache, StateCache
 from .stroke import Stroke
 
 
-def steps_1_2(scene):
-    """A seal scene's steps 1-2: mount and (p_in != 0) pressurise, or the restart."""
+def steps_1_2(scene, cache=None):
+    """A seal scene's steps 1-2: mount and (p_in != 0) pressurise, or the restart from a
+    ``[start] state`` file or from the state cache (``cache``: the scene's
+    :class:`sealts.steps.state_cache.StateCache` entry, None without)."""
     if scene.start.state:
         return [Restart(scene.start.state)]
+    if cache is not None and cache.hit():
+        return [Restart(cache.path, cached=True)]
     fl = scene.fluid
-    return [Mount()] + ([Pressurise()] if fl.p_in != 0.0 or fl.p_out != 0.0 else [])
+    steps = [Mount()] + ([Pressurise()] if fl.p_in != 0.0 or fl.p_out != 0.0 else [])
+    return steps + ([SaveToCache(cache)] if cache is not None else [])
 
 
-def steps_for(scene, command="run", resume=None):
+def steps_for(scene, command="run", resume=None, options=None):
     """The steps of a scene (``command``: "run" or "ihl"); ``resume``: a stroke checkpoint
-    to go on from (``--restart``; :func:`sealts.steps.run_checkpoint.check_restart`)."""
+    to go on from (``--restart``; :func:`sealts.steps.run_checkpoint.check_restart`);
+    ``options``: the PETSc options in force (they key the state cache)."""
     if resume is not None:       # the checkpoint of the scene's hold or of its stroke
         return [Restart(resume),
                 Hold(resume=resume) if scene.hold.p_end != 0.0 else Stroke(resume=resume)]
     if scene.model == "film":
         return [SteadyFilm() if scene.analysis.type == "steady" else TransientFilm()]
-    steps = steps_1_2(scene)
+    steps = steps_1_2(scene, StateCache.for_scene(scene, options, command))
     if command == "ihl":
         return steps + [Ihl()]
-    if not scene.start.state:
+    if not scene.start.state:         # also from the cache: every run leaves its state.h5
         steps.append(Checkpoint())
     if scene.hold.p_end != 0.0:
         steps.append(Hold())
@@ -113,7 +121,7 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
         writer.summary(summary)
         return summary
 
-    steps = steps_for(scene, command, resume)
+    steps = steps_for(scene, command, resume, petsc_options)
     try:
         run_steps(steps, state)
     except (Exception, Interrupted) as e:

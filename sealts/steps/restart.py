@@ -14,8 +14,10 @@ from .state import read_state
 class Restart(Step):
     name = "restart"
 
-    def __init__(self, path):
-        self.path = path
+    def __init__(self, path, cached=False):
+        """``cached``: ``path`` is the state cache's entry for this scene
+        (:mod:`sealts.steps.state_cache`), not a file the scene names."""
+        self.path, self.cached = path, cached
 
     def run(self, state):
         from ..scene import SceneError
@@ -44,7 +46,12 @@ class Restart(Step):
                 entries = [side[np.argmin(model.mesh.X[side, 1])]]
             state.load.set_reach(state.load.recount(reach, entries))
         state.udot = None
-        state.say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not "
-                  "repeated", force=True)
+        if self.cached:
+            state.say(f"steps 1-2 from the state cache {path} (same mesh, geometry, "
+                      "material, contact, pressures, solver options and code)", force=True)
+            state.parts["steps_1_2"] = {"from": "cache", "cache": str(path)}
+        else:
+            state.say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not "
+                      "repeated", force=True)
         state.results = (json.loads(attrs["results"]) if "results" in attrs
                          else model.results(state.t, state.u))
