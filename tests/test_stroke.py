@@ -99,6 +99,28 @@ def test_viscoelastic_stroke_starts_relaxed(stroke):
     assert np.abs(elastic_only - long_term).max() > 0.1 * big     # the Prony part matters
 
 
+def test_prony_stresses_are_held_to_the_film_pressures_tolerance(stroke):
+    """Each active Prony term enters the stress as g_i H_i (sealts/solid/viscoelastic.py,
+    Eq. (a)): its H_i is held to rtol |H_i| + rtol p_ref / g_i, so that the term's stress
+    errs by at most what the film pressures may (rtol p_ref), on every Gauss point and
+    component; a term of small weight is held loosely. The others keep theirs."""
+    from dataclasses import replace
+    step, _, _, _, (s, state) = stroke
+    ve = replace(s.viscoelastic, prony="table2", t_min=1e-3)
+    vstep = stroke_of(state, replace(s, viscoelastic=ve))
+    g = vstep.viscoelastic.series.g[vstep.viscoelastic.classes.active]
+    assert g.size > 1 and np.ptp(g) > 0.0
+    rt, at = vstep.tolerances(1e-3)
+    H = vstep.prony_dofs()
+    assert H.shape[2] == g.size and np.unique(H).size == H.size
+    assert (rt[H] == 1e-3).all()
+    want = np.broadcast_to((1e-3 * vstep.pressure_scale / g)[None, None, :, None], H.shape)
+    assert at[H] == pytest.approx(want, rel=1e-12)
+    p = vstep.layout.film_dofs
+    assert at[p] == pytest.approx(1e-3 * vstep.pressure_scale)
+    assert (at[vstep.layout.udofs] == 1e-6).all()
+
+
 def test_restart_from_a_saved_state_repeats_the_stroke(tmp_path):
     """A run writes state.h5 after steps 1-2 and the stroke's fields as an XDMF time series;
     a scene with [start] state = that file skips

@@ -409,6 +409,13 @@ class StrokeProblem:
         p, _ = self.rod.pressure(0.0, self.U0)
         return max(fl.p_in, fl.p_out, float(np.max(p)) if p.size else 0.0)
 
+    def prony_dofs(self):
+        """The Prony internal variables' dofs (serial), shaped (cells, 4 Gauss points,
+        active terms, 4 components) as :class:`sealts.solid.viscoelastic.PronyTerm` holds
+        them."""
+        lay = self.layout
+        return lay.prony_dofs[lay.cells].reshape(lay.cells.size, 4, self.prony.g.size, 4)
+
     def tolerances(self, rtol, atol=1e-6):
         """TS's local-error tolerances per unknown, (rtol, atol) arrays in the serial
         numbering: each unknown's error e_i is held to atol_i + rtol_i |U_i| in the max norm.
@@ -427,6 +434,11 @@ class StrokeProblem:
           moved the net leakage by 2 % at rtol 1e-3 (benchmarks/stroke_sensitivity.md);
         * the elastic slips of the rod friction state (mm): 1e-3 gamma_crit, a sticking
           node's force to 1e-3;
+        * the Prony internal variables H_i (MPa, viscoelastic): rtol, and atol = rtol p_ref
+          / g_i, so that each term's stress g_i H_i (Eq. (a) of
+          :mod:`sealts.solid.viscoelastic`) is held to the film pressures' rtol p_ref. With
+          1e-6 MPa the near-zero components of the fast terms' H_i set the steps
+          (benchmarks/work_precision.md: the fig14_ve_sq_ff cycle's steps fell six-fold);
         * left out (atol 1e300): the friction work W, whose integrand v F is a function of
           the error-controlled state (its own error would be measured against |W|, tens of
           thousands of N mm), and the paper scheme's c0 and qd, algebraic flows.
@@ -449,6 +461,10 @@ class StrokeProblem:
                 "ts_pressure_atol", max(rtol * self.pressure_scale, atol))
         if self.layout.slip_dofs.size:
             at[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
+        if self.prony is not None:
+            g = self.prony.g
+            at[self.prony_dofs().reshape(-1, 4, g.size, 4)] = \
+                (rtol * self.pressure_scale / g)[None, None, :, None]
         if self.vdofs.size:
             rt[self.vdofs] = 0.0
             at[self.vdofs] = rtol * self.volume_scale
