@@ -172,7 +172,8 @@ def test_a_viscoelastic_stroke_extended_is_the_longer_run(tmp_path):
     texts = {t: config_text("paper_fig14_ve_sq_ff", mesh={"h_contact": 0.1, "h_bulk": 0.4,
                                                           "cache": str(ROOT / "meshes")},
                             stroke={"t_end": t, "output_times": [0.25, 0.5]},
-                            output={"plot": False, "progress": False})
+                            output={"plot": False, "progress": False},
+                            start={"cache": False})     # both mount: equal counts too
              for t in (0.5, 0.75)}
     scenes = {}
     for t, text in texts.items():
@@ -207,7 +208,8 @@ def test_a_stopped_hold_restarted_is_the_uninterrupted_one(tmp_path):
                                            "cache": str(ROOT / "meshes")},
                        viscoelastic={"prony": "custom", "prony_g": [0.5, 0.3],
                                      "prony_tau": [0.01, 1.0], "t_min": 1e-3},
-                       hold={"t_end": 1e3}, output={"plot": False})
+                       hold={"t_end": 1e3}, output={"plot": False},
+                       start={"cache": False})     # both runs pressurise: equal counts too
     scene = tmp_path / "hold.toml"
     scene.write_text(text)
     a, b = tmp_path / "a", tmp_path / "b"
