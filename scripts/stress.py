@@ -9,8 +9,9 @@ negative: the seal's mean plane past the rod's), the groove walls' largest penal
 penetration (um), net leakage, the film's balance (V_in - V_out minus the change of the
 fluid the film holds, mm^3: what the film's storage M_i dh_i/dt leaves out, chiefly the
 seal surface's axial motion, Eq. 21), peak friction, any NaN or Inf in the series, and
-wall time. ``--out FILE`` also writes the
-table as Markdown with the machine's load. Usage:
+wall time (a case whose steps 1-2 read the same inputs as an earlier one's starts from the
+state cache, sealts/steps/state_cache.py, so wall times compare within one table). ``--out
+FILE`` also writes the table as Markdown with the machine's load. Usage:
 
     .venv/bin/python scripts/stress.py [--factors pressure,speed,...] [--mesh 0.05 0.2]
         [--timeout 900] [--out benchmarks/stress.md] [--list]
