@@ -65,6 +65,8 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from sealts.io.results import read_profiles  # noqa: E402
 OUT = ROOT / "benchmarks"
 REFERENCE = OUT / "work_precision_reference.json"
 REF_PROFILE = OUT / "work_precision_reference_profile.csv"
@@ -185,14 +187,12 @@ def run(label, text, opts, work, log=True):
 
 
 def profile(path, t=T_PROFILE):
-    """(y, h) of the stroke's film profile at time t (mm), or None."""
+    """(y, h) of the stroke's film profile at time t (mm), sorted by y, or None."""
     try:
-        with open(path) as f:
-            rows = [(float(x["y"]), float(x["h"])) for x in csv.DictReader(f)
-                    if abs(float(x["t"]) - t) < 1e-9]
+        block = read_profiles(path, sort_by="y").get(t)
     except OSError:
         return None
-    return np.array(rows) if rows else None
+    return None if block is None else np.column_stack([block["y"], block["h"]])
 
 
 def errors(r, ref, ref_prof):
@@ -218,8 +218,7 @@ def film_error(p, ref_prof):
     the contact's ends differ by the meshes' spacing, not by the film."""
     y, h = ref_prof[:, 0], ref_prof[:, 1]
     zone = h <= 3.0 * h.min()
-    o = np.argsort(p[:, 0])
-    hi = np.interp(y[zone], p[o, 0], p[o, 1])
+    hi = np.interp(y[zone], p[:, 0], p[:, 1])          # p sorted by y (profile)
     return float(max(abs(p[:, 1].min() - h.min()) / h.min(),
                      abs(hi.mean() - h[zone].mean()) / h[zone].mean()))
 
