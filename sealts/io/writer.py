@@ -57,6 +57,7 @@ def write_h5(target, arrays, attrs):
     finally:
         tmp.unlink(missing_ok=True)
 
+
 class Writer:
     def __init__(self, outdir, comm, plots=True, keep=(), resume=False):
         """``keep``: paths the run reads (a ``[start] state`` file), never deleted.

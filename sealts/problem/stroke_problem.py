@@ -463,8 +463,7 @@ class StrokeProblem:
             at[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
         if self.prony is not None:
             g = self.prony.g
-            at[self.prony_dofs().reshape(-1, 4, g.size, 4)] = \
-                (rtol * self.pressure_scale / g)[None, None, :, None]
+            at[self.prony_dofs()] = (rtol * self.pressure_scale / g)[None, None, :, None]
         if self.vdofs.size:
             rt[self.vdofs] = 0.0
             at[self.vdofs] = rtol * self.volume_scale

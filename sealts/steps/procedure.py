@@ -4,7 +4,7 @@
            (a [start] state, or the state cache: sealts/steps/state_cache.py),
            then Hold (hold.p_end) or Stroke (stroke.velocity);
            --restart OUTDIR: [Restart, Hold or Stroke] from OUTDIR's checkpoint
-    ihl:   [Mount, Pressurise (p_in != 0)] or [Restart], then Ihl
+    ihl:   [Mount, Pressurise (p_in != 0), SaveToCache] or [Restart], then Ihl
     film:  [SteadyFilm] or [TransientFilm]
 
 ``prepare`` runs steps 1-2 alone (tests, benchmarks); a sweep is ``prepare`` once, then a
