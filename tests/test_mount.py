@@ -152,6 +152,34 @@ def test_rect_ring_corner_radius_rounds_the_rod_side(tmp_path, mirror):
         "h_contact": 0.05, "h_bulk": 0.2, "grading": 0.3, "version": 1}
 
 
+def test_layer_depth_keeps_the_contact_size_beneath_the_rod_side(tmp_path):
+    """mesh.layer_depth: the elements whose centres lie within the layer beneath the rod
+    side have the contact size (mean edge within 25 % of h_contact), where without the
+    layer those deeper than a few elements are already graded larger (the reason for the
+    key); without it the mesh and its cache key are the ones before."""
+    from sealts.mesh.seal_mesh import _key
+    shape, hc, hb = ORing(50.17, 5.33), 0.05, 0.4
+    r0 = 0.5 * 5.33
+
+    def sizes(mesh, lo, hi):
+        X, c = mesh.X, mesh.conn
+        mid = X[c].mean(axis=1)
+        centre = np.array([0.5 * 50.17 + r0, 0.0])
+        depth = r0 - np.hypot(*(mid - centre).T)         # below the O-ring's surface
+        rod_side = mid[:, 0] < centre[0] - 0.75 * r0      # beneath the rod side's arc
+        edge = np.linalg.norm(X[c] - X[np.roll(c, 1, axis=1)], axis=2).mean(axis=1)
+        return edge[rod_side & (depth > lo) & (depth < hi)].mean()
+
+    plain = build_mesh(shape, hc, hb, cache_dir=tmp_path)
+    layered = build_mesh(shape, hc, hb, cache_dir=tmp_path, layer_depth=0.3)
+    assert sizes(layered, 0.15, 0.25) == pytest.approx(hc, rel=0.25)
+    assert sizes(plain, 0.15, 0.25) > 1.3 * hc
+    assert layered.X.shape[0] > plain.X.shape[0]
+    assert _key(shape, hc, hb, 0.5)[0] == _key(shape, hc, hb, 0.5, layer_depth=0.0)[0]
+    assert "layer_depth" not in _key(shape, hc, hb, 0.5)[1]
+    assert _key(shape, hc, hb, 0.5, layer_depth=0.3)[1]["layer_depth"] == 0.3
+
+
 def test_mounted_oring_converges_under_mesh_refinement(tmp_path):
     """Contact force and width of the paper's O-ring on three meshes: the changes shrink and
     the finest two agree to 1 % (force) and 5 % (width; it is resolved by h_contact)."""

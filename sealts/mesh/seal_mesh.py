@@ -14,7 +14,13 @@ Named boundaries (gmsh physical curves, kept as node and edge sets):
 For the O-ring the four quarter arcs are centred on the directions -r (rod_side), -z
 (pressure_side), +r (groove) and +z (atmosphere_side). Elements are four-node quads
 (recombined, subdivided so that none is left triangular), of size ``h_contact`` next to the
-rod side and growing to ``h_bulk`` over ``grading_distance``.
+rod side and growing to ``h_bulk`` over ``grading_distance``; with ``layer_depth`` > 0 the
+size stays ``h_contact`` to that depth beneath the rod side and grows over
+``grading_distance`` beyond it. The film's transports are set at the contact's inlet and
+outlet, a few hundredths of a millimetre long, and the solid beneath them shapes the gap
+there: without the layer the size a few contact elements deep follows h_bulk, and the net
+leakage scatters with h_contact instead of converging (benchmarks/work_precision.md, the
+layer family).
 
 Mirror-symmetric meshes (``build_mesh(..., mirror=True)``, scene key ``mesh.symmetric``): the
 unstructured mesher has no reason to place nodes symmetrically about the cross-section's
@@ -89,9 +95,11 @@ class RectangularRing:
     corner_radius: float = 0.0    # of the two corners on the rod side (part of it), mm
 
 
-def _key(shape, h_contact, h_bulk, grading_distance, mirror=False):
+def _key(shape, h_contact, h_bulk, grading_distance, mirror=False, layer_depth=0.0):
     spec = dict(kind=type(shape).__name__, **asdict(shape), h_contact=h_contact,
                 h_bulk=h_bulk, grading=grading_distance, version=1)
+    if layer_depth:        # only then: meshes without a layer keep their keys
+        spec["layer_depth"] = layer_depth
     if not spec.get("corner_radius", 1.0):     # sharp corners keep their meshes' keys
         del spec["corner_radius"]
     if mirror:             # only then: the default meshes keep their keys
@@ -101,15 +109,16 @@ def _key(shape, h_contact, h_bulk, grading_distance, mirror=False):
 
 
 def build_mesh(shape, h_contact, h_bulk, grading_distance=0.5, cache_dir="meshes",
-               mirror=False):
+               mirror=False, layer_depth=0.0):
     """Mesh ``shape`` (ORing or RectangularRing), reusing ``cache_dir/<key>.npz``; with
-    ``mirror`` mirror-symmetric about the shape's mid-plane (module docstring)."""
-    key, spec = _key(shape, h_contact, h_bulk, grading_distance, mirror)
+    ``mirror`` mirror-symmetric about the shape's mid-plane; ``layer_depth`` (mm): the depth
+    beneath the rod side meshed at ``h_contact`` (module docstring)."""
+    key, spec = _key(shape, h_contact, h_bulk, grading_distance, mirror, layer_depth)
     path = Path(cache_dir) / f"{spec['kind'].lower()}-{key}.npz"
     if path.is_file():
         return load_npz(path)
     mesh = (_mirrored_mesh if mirror else _gmsh_mesh)(shape, h_contact, h_bulk,
-                                                     grading_distance)
+                                                     grading_distance, layer_depth)
     path.parent.mkdir(parents=True, exist_ok=True)
     np.savez_compressed(path, X=mesh.X, conn=mesh.conn, spec=json.dumps(spec),
                         **{f"edges_{g}": e for g, e in mesh.edges.items()})
@@ -155,10 +164,11 @@ def mirror_map(X, z_m, tol=1e-12):
     return j
 
 
-def _mirrored_mesh(shape, h_contact, h_bulk, grading_distance):
+def _mirrored_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth=0.0):
     """gmsh's mesh of the half z <= z_m, and its mirror image (module docstring)."""
     z_m = mid_plane(shape)
-    X, conn, edges, mid = _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=True)
+    X, conn, edges, mid = _gmsh_mesh(shape, h_contact, h_bulk, grading_distance,
+                                   layer_depth, half=True)
     n = X.shape[0]
     if np.abs(X[mid, 1] - z_m).max() > 1e-9 * max(1.0, np.abs(X).max()):
         raise RuntimeError("gmsh put nodes of the mid-plane off it")
@@ -205,7 +215,7 @@ def _rectangle(occ, s, half):
     return rod + sides + [corner], [[corner] + rod] + [[c] for c in sides]
 
 
-def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=False):
+def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth=0.0, half=False):
     """The gmsh mesh of the whole cross-section; with ``half`` of its half z <= z_m only,
     returned untidied with the nodes on the mid-plane: (X, conn, edges, mid)."""
     import gmsh
@@ -250,8 +260,8 @@ def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, half=False):
         # subdivision halves every size: ask for twice the target
         f.setNumber(thr, "SizeMin", 2 * h_contact)
         f.setNumber(thr, "SizeMax", 2 * h_bulk)
-        f.setNumber(thr, "DistMin", 0.0)
-        f.setNumber(thr, "DistMax", grading_distance)
+        f.setNumber(thr, "DistMin", layer_depth)
+        f.setNumber(thr, "DistMax", layer_depth + grading_distance)
         f.setAsBackgroundMesh(thr)
         gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
         gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)

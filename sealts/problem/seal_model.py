@@ -273,7 +273,7 @@ def model_from_scene(scene, comm=None):
                                     z0 - 0.5 * sl.width, z0 + 0.5 * sl.width,
                                     sl.corner_radius)
         mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache,
-                          mirror=m.symmetric)
+                          mirror=m.symmetric, layer_depth=m.layer_depth)
     material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)
     return SealModel(mesh, material, scene.rod.radius, 0.5 * gr.diameter,
                      (z0 - 0.5 * gr.width, z0 + 0.5 * gr.width),

@@ -161,6 +161,10 @@ class Mesh:
     h_bulk: float = option(0.05, unit="mm", gt=0.0, doc="element size in the bulk")
     grading_distance: float = option(0.5, unit="mm", gt=0.0,
                                      doc="distance over which sizes grow to h_bulk")
+    layer_depth: float = option(0.0, unit="mm", ge=0.0,
+                                doc="depth beneath the rod side meshed at h_contact before "
+                                    "the grading starts (resolves the solid under the "
+                                    "contact's inlet and outlet; 0: grading from the surface)")
     cache: str = option("meshes", doc="mesh cache directory (relative to the working dir)")
     symmetric: bool = option(False, doc="mesh half the cross-section and mirror it about the "
                                         "groove's mid-plane, so the mesh is mirror-symmetric "
@@ -322,8 +326,8 @@ def _check_sizes(s):
     """Sizes that would not fit the machine, refused before anything is meshed: the seal
     mesh's node count estimated as its section over h_bulk^2 plus the graded band along
     the rod side over h_contact^2 (a tenth of the perimeter times grading_distance: the
-    default 0.025 / 0.2 O-ring mesh gives 1,900 for its 1,411 nodes), and the film's
-    element count."""
+    0.025 / 0.2 O-ring mesh gives 1,900 for its 1,411 nodes; plus a quarter of the perimeter
+    times layer_depth), and the film's element count."""
     if s.model == "film":
         if s.film.elements > MAX_FILM_ELEMENTS:
             raise SceneError(f"film.elements = {s.film.elements:,}: more than "
@@ -338,7 +342,8 @@ def _check_sizes(s):
         area, perimeter = sl.width * sl.height, 2 * (sl.width + sl.height)
         size = min(sl.width, sl.height)
     bulk = area / m.h_bulk ** 2
-    band = 0.1 * perimeter * min(m.grading_distance, size) / m.h_contact ** 2
+    band = perimeter * (0.25 * min(m.layer_depth, size) + 0.1 * min(m.grading_distance, size)) \
+        / m.h_contact ** 2
     nodes = bulk + band
     if nodes > MAX_MESH_NODES:
         key = "mesh.h_contact" if band > bulk else "mesh.h_bulk"
