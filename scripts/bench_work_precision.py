@@ -4,11 +4,14 @@ against its closed form (issue 17).
 Every O-ring setting is one ``sealts run`` process, timed whole as a user meets it (numba's
 cache warm, the mesh cached, nothing of steps 1-2 reused), one after another, nothing else
 of sealts running beside. The defaults are ``configs/oring_stroke.toml`` (0.025 / 0.2 mm
-mesh, BDF, stroke rtol 1e-3, fv film, UMFPACK); each family changes one factor:
+mesh, BDF 3, stroke rtol 1e-2, fv film, UMFPACK); each family changes one factor:
 
 * ``rtol``: the stroke's TS tolerance (``-stroke_ts_rtol``) 1e-2, 1e-3, 1e-4;
-* ``mesh``: contact / bulk element size 0.1 / 0.4, 0.05 / 0.2, 0.025 / 0.2, 0.0125 / 0.1 mm
-  (also the cost growth: wall time against unknowns, fitted exponent);
+* ``mesh``: contact / bulk element size 0.1 / 0.4, 0.05 / 0.2, 0.025 / 0.2, 0.02 / 0.2,
+  0.0175 / 0.2, 0.0125 / 0.2, 0.0125 / 0.1 mm (also the cost growth: wall time against
+  unknowns, fitted exponent);
+* ``layer``: contact sizes 0.025, 0.02, 0.0175, 0.0125 mm kept to 0.1 mm beneath the rod
+  side (``mesh.layer_depth``), bulk 0.2 mm;
 * ``bdf``: the BDF order 1, 2 (PETSc's default), 3 (``-stroke_ts_bdf_order``);
 * ``theta``: Crank-Nicolson (``-stroke_ts_type theta -stroke_ts_theta_theta 0.5
   -stroke_ts_theta_endpoint``);
@@ -17,7 +20,7 @@ mesh, BDF, stroke rtol 1e-3, fv film, UMFPACK); each family changes one factor:
   -pc_factor_mat_ordering_type amd`` for every solver);
 * ``cache``: the default with the pressurised-state cache warm (sealts/steps/state_cache.py;
   every other row runs steps 1-2, ``[start] cache = false``);
-* ``combined``: BDF 3 with stroke rtol 1e-2 (the two cheapest changes together);
+* ``before``: BDF 2 with stroke rtol 1e-3 (the defaults until 2026-12-03);
 * ``targets``: ``configs/paper_fig14_ve_sq_ff.toml`` (viscoelastic, squeeze, flow factors;
   timed, its leakage not compared) and the paper's mesh (0.01 / 0.05 mm) at the defaults;
 * ``plain``: the default again without -log_view (every other row pays the log's own
@@ -47,6 +50,7 @@ against the net leakage's error per family; wall time against unknowns). Usage:
 
     .venv/bin/python scripts/bench_work_precision.py            # ~55 min here
     .venv/bin/python scripts/bench_work_precision.py --quick    # rtol and mesh, ~5 min
+    .venv/bin/python scripts/bench_work_precision.py --families mesh,layer   # some families
     .venv/bin/python scripts/bench_work_precision.py --reference   # the reference, once
     .venv/bin/python scripts/bench_work_precision.py --from-csv    # report again, no runs
 """
@@ -73,6 +77,9 @@ REF_PROFILE = OUT / "work_precision_reference_profile.csv"
 SLIDER = OUT / "work_precision_slider.csv"
 SEALTS = [sys.executable, "-m", "sealts", "run"]
 LIMIT = 900.0             # s, a run's time limit (SIGTERM: sealts writes its summary)
+# Crank-Nicolson crawls from t = 0.017 s on (it ran into the 900 s limit on 2026-12-03):
+# two minutes show it
+LIMITS = {"theta": 120.0}
 T_PROFILE = 2.5           # s, mid-outstroke (v = v_max)
 LU_PETSC = [f"-{p}pc_factor_mat_solver_type" for p in ("", "stroke_", "static_", "stroke_start_")]
 # every residual and Jacobian goes through SNES (TS's own events are nested inside these)
@@ -84,15 +91,18 @@ TARGETS = {"default": 10.0, "paper_fig14_ve_sq_ff": 20.0, "paper mesh": 120.0}  
 
 
 def scene_text(mesh=None, name=None, film_scheme=None, base="oring_stroke.toml",
-               state_cache=False):
+               state_cache=False, layer=None):
     """The default scene's text with the mesh sizes (contact, bulk), name or film scheme
-    replaced; without ``state_cache`` steps 1-2 run in full (``[start] cache = false``)."""
+    replaced, ``layer`` the mesh's layer_depth (mm); without ``state_cache`` steps 1-2 run
+    in full (``[start] cache = false``)."""
     s = (ROOT / "configs" / base).read_text()
     if not state_cache:
         s += "\n[start]\ncache = false\n"
     if mesh is not None:
         s = re.sub(r"(?m)^h_contact = [0-9.e-]+", f"h_contact = {mesh[0]}", s)
         s = re.sub(r"(?m)^h_bulk = [0-9.e-]+", f"h_bulk = {mesh[1]}", s)
+    if layer is not None:
+        s = s.replace("[mesh]\n", f"[mesh]\nlayer_depth = {layer}\n", 1)
     if name is not None:
         s = re.sub(r'(?m)^name = "[^"]*"', f'name = "{name}"', s)
     if film_scheme is not None:
@@ -106,10 +116,13 @@ def settings(quick):
     out = [("rtol", f"rtol {r:.0e}", d, ["-stroke_ts_rtol", f"{r:g}"])
            for r in (1e-2, 1e-3, 1e-4)]
     out += [("mesh", f"{m[0]:g} / {m[1]:g} mm", scene_text(m), [])
-            for m in ((0.1, 0.4), (0.05, 0.2), (0.0125, 0.1))]
+            for m in ((0.1, 0.4), (0.05, 0.2), (0.02, 0.2), (0.0175, 0.2), (0.0125, 0.2),
+                      (0.0125, 0.1))]
     if quick:
         return out
-    out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 3)]
+    out += [("layer", f"{c:g} / 0.2 mm, layer 0.1 mm", scene_text((c, 0.2), layer=0.1), [])
+            for c in (0.025, 0.02, 0.0175, 0.0125)]
+    out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 2)]
     out += [("theta", "Crank-Nicolson", d, ["-stroke_ts_type", "theta",
                                             "-stroke_ts_theta_theta", "0.5",
                                             "-stroke_ts_theta_endpoint"])]
@@ -118,8 +131,8 @@ def settings(quick):
     for o in LU_PETSC:
         lu += [o, "petsc", o.replace("solver_type", "ordering_type"), "amd"]
     out += [("lu", "PETSc LU, AMD", d, lu)]
-    out += [("combined", "BDF 3, rtol 1e-2", d, ["-stroke_ts_bdf_order", "3",
-                                                   "-stroke_ts_rtol", "0.01"])]
+    out += [("before", "BDF 2, rtol 1e-3", d, ["-stroke_ts_bdf_order", "2",
+                                                 "-stroke_ts_rtol", "0.001"])]
     cached = scene_text(state_cache=True).replace("[mesh]\n", '[mesh]\ncache = "{cache}"\n', 1)
     out += [("cache", "state cache warm", cached, [])]
     out += [("targets", "paper_fig14_ve_sq_ff", scene_text(base="paper_fig14_ve_sq_ff.toml"),
@@ -143,9 +156,9 @@ def log_view(path):
     return t
 
 
-def run(label, text, opts, work, log=True):
+def run(label, text, opts, work, log=True, limit=LIMIT):
     """One `sealts run` of the scene text: its summary, timings and memory (``log``: with
-    -log_view's split)."""
+    -log_view's split), stopped after ``limit`` seconds."""
     work.mkdir(parents=True, exist_ok=True)
     scene = work / "scene.toml"
     scene.write_text(text)
@@ -162,7 +175,7 @@ def run(label, text, opts, work, log=True):
             if pid:
                 p.returncode = os.waitstatus_to_exitcode(status)
                 break
-            if not stopped and time.perf_counter() - t0 > LIMIT:
+            if not stopped and time.perf_counter() - t0 > limit:
                 p.terminate()
                 stopped = True
             time.sleep(0.05)
@@ -291,12 +304,14 @@ def plot(rows, fit, path, when):
     for r in rows:
         if r.get("e_net") is not None:
             fams.setdefault(r["family"], []).append(r)
-    names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-2 / 1e-4", "mesh": "mesh (contact / bulk)",
-             "bdf": "BDF order 1 / 3", "theta": "Crank-Nicolson", "film": "paper film scheme",
+    names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4", "mesh": "mesh (contact / bulk)",
+             "bdf": "BDF order 1 / 2", "theta": "Crank-Nicolson", "film": "paper film scheme",
              "lu": "PETSc LU (AMD)",
              "targets": "paper mesh, rtol 1e-3 (the reference's mesh: time error only)",
-             "combined": "BDF 3 and rtol 1e-2", "plain": "default without -log_view",
-             "default": "default (0.025 / 0.2 mm, BDF 2, rtol 1e-3)"}
+             "before": "BDF 2 and rtol 1e-3 (the defaults before)",
+             "layer": "mesh with a 0.1 mm layer at h_contact",
+             "plain": "default without -log_view",
+             "default": "default (0.025 / 0.2 mm, BDF 3, rtol 1e-2)"}
     for fam, rs in fams.items():
         rs = sorted(rs, key=lambda r: r["wall"])
         ax[0].loglog([r["wall"] for r in rs], [max(r["e_net"], 1e-6) for r in rs],
@@ -347,6 +362,8 @@ def write_reference(r):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="rtol and mesh families only")
+    ap.add_argument("--families", help="only these families (comma-separated; the default "
+                                       "row always runs)")
     ap.add_argument("--reference", action="store_true",
                     help="compute the overkill reference (the paper's mesh at rtol 1e-4)")
     ap.add_argument("--from-run", metavar="DIR",
@@ -390,11 +407,12 @@ def main():
                            "time_ms": float(x["time_ms"]), "error": float(x["error"]),
                            "newton": int(x["newton"])} for x in csv.DictReader(f)]
     else:
-        rows, when, host = measure(work, a.quick, ref, ref_prof)
+        rows, when, host = measure(work, a.quick, ref, ref_prof,
+                                   a.families.split(",") if a.families else None)
     report(rows, when, host, a.quick, ref, slider)
 
 
-def measure(work, quick, ref, ref_prof):
+def measure(work, quick, ref, ref_prof, families=None):
     """Run every setting (one process each, one after another); the rows."""
     when = datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     host = machine()
@@ -404,13 +422,15 @@ def measure(work, quick, ref, ref_prof):
     # a warm-up run compiles numba's cache and meshes the default (not timed)
     run("warm-up", scene_text(), [], work / "warm-up")
     rows = []
-    todo = [("default", "0.025 / 0.2 mm, rtol 1e-3", scene_text(), [])] + settings(quick)
-    todo = [t for t in todo if not (t[0] == "rtol" and t[1] == "rtol 1e-03")]
+    todo = [("default", "0.025 / 0.2 mm, BDF 3, rtol 1e-2", scene_text(), [])]
+    todo += [t for t in settings(quick) if (families is None or t[0] in families)
+             and t[1] not in ("rtol 1e-02", "0.025 / 0.2 mm")]
     for k, (fam, label, text, opts) in enumerate(todo):
         if fam == "cache":       # an untimed run fills a fresh state cache first
             text = text.replace("{cache}", str(work / f"{k:02d}" / "cache"))
             run("fill", text, opts, work / f"{k:02d}" / "fill")
-        r = run(label, text, opts, work / f"{k:02d}", log=fam != "plain")
+        r = run(label, text, opts, work / f"{k:02d}", log=fam != "plain",
+                limit=LIMITS.get(fam, LIMIT))
         r["family"] = fam
         r.update(errors(r, ref, ref_prof))
         rows.append(r)
