@@ -243,7 +243,10 @@ def strokes(tmp_path_factory):
     freely in its frictionless groove (Eq. 21 gives the film no grip on the seal's axial
     motion), and that near-mechanism turns the 1 % between the schemes' shear into 16 %
     between their leakage volumes. Once with each film scheme; per scheme the step, the
-    accepted states and the scalars at the end (U' the last step's difference quotient)."""
+    accepted states and the scalars at the end (U' the last step's difference quotient).
+    At stroke rtol 1e-3: the flows at the end follow U', a first-order quotient over the
+    last step, and at the default 1e-2 its error (Q_out 6 % apart) hides the schemes'
+    difference this test compares."""
     from dataclasses import replace
 
     from conftest import Recorder, mount_and_pressurise, scene, stroke_of
@@ -251,7 +254,7 @@ def strokes(tmp_path_factory):
     cache = str(tmp_path_factory.mktemp("mesh"))
     s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": cache},
               stroke={"velocity": "ramp-hold", "v_max": 100.0, "t_ramp": 0.01,
-                      "t_end": 0.02, "output_times": [], "friction": True})
+                      "t_end": 0.02, "output_times": [], "friction": True, "rtol": 1e-3})
     state = mount_and_pressurise(s)
     out = {}
     for scheme in ("fv", "paper"):
@@ -294,8 +297,9 @@ def test_stroke_schemes_agree(strokes):
     outflow Q_out and the leakage volumes V_in, V_out within 5 %, the fluid shear within 2 %,
     the inflow Q_in within 15 %.
 
-    Measured: p_max -2.4 %, load -1.9 %, min h -0.09 %, Q_out -2.8 %, |V_in| +1.7 %,
-    |V_out| +3.0 %, shear +0.5 %, Q_in -10 % (paper against fv).
+    Measured (BDF 3, rtol 1e-3): p_max -2.5 %, load -1.9 %, min h -0.09 %, Q_out -2.4 %,
+    |V_in| +1.5 %, V_out -0.8 %, shear +0.6 %, Q_in -10 % (paper against fv). Q_out is the
+    time error's: -6.4 % at rtol 1e-2, +1.1 % at 1e-4 (the rest moves by under 0.5 %).
 
     Why these bounds: on the paper run's final gap (y, h, dh/dt), the two film-only schemes
     on the same nodes give the size of the discretisation difference: the paper's
