@@ -119,24 +119,24 @@ def dragged(tmp_path_factory):
     out = {}
     state = None
     for history in ("state", "anchors"):
-        s = coarse_stroke(cache, friction_history=history)
+        s = coarse_stroke(cache, friction_history=history, rtol=1e-3)
         state = state or mount_and_pressurise(s)
         step = stroke_of(state, s)
         rec = Recorder()
         U = step.run(step.start(), s.stroke.t_end, s.stroke.dt, s.stroke.rtol,
                      observers=[rec])
-        out[history] = step, U, rec.states, s.stroke.rtol
+        out[history] = step, U, rec.states
     return out
 
 
 def test_sliding_seal_reaches_the_coulomb_limit_under_ts(dragged):
     """At 100 mm/s the contact slides: every touching node's elastic slip has reached
     gamma_crit (x = 1 to 1e-3, the Bouc-Wen sliding equilibrium), so the rod's friction on
-    the seal is mu_s times the asperity load (Eq. 46, 1e-3), as with the anchored law; at
-    no accepted step a slip beyond gamma_crit by more than the time tolerance allows (the
-    stroke's rtol of it: at the default rtol 1e-2 BDF 3 overshoots by 0.27 %, on the
-    knee; the law itself saturates at x = 1)."""
-    step, U, states, rtol = dragged["state"]
+    the seal is mu_s times the asperity load (Eq. 46, 1e-3), as with the anchored law; no
+    slip beyond gamma_crit by more than the smoothing allows at any accepted step. Run at
+    stroke rtol 1e-3: at the default 1e-2 the time error lets BDF 3 overshoot the knee by
+    0.27 %, beyond what this bound is about (the law itself saturates at x = 1)."""
+    step, U, states = dragged["state"]
     t = states[-1][0]
     fr = step.friction
     p, _ = step.rod.pressure(t, U)
@@ -147,6 +147,6 @@ def test_sliding_seal_reaches_the_coulomb_limit_under_ts(dragged):
     load = step.rod.forces(t, U).sum()
     assert fr.total(t, U) == pytest.approx(0.1 * load, rel=1e-3)
     for ts, Us in states:
-        assert np.abs(Us[step.layout.slip_dofs]).max() <= fr.gamma_crit * (1 + rtol)
-    anchored, Ua, _, _ = dragged["anchors"]
+        assert np.abs(Us[step.layout.slip_dofs]).max() <= fr.gamma_crit * (1 + 1e-3)
+    anchored, Ua, _ = dragged["anchors"]
     assert fr.total(t, U) == pytest.approx(anchored.friction.total(t, Ua), rel=2e-3)
