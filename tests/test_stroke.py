@@ -180,8 +180,10 @@ def test_tolerances_per_unknown_and_from_the_command_line(stroke):
     """The leakage volumes are held to rtol V_c absolutely (V_c = A L h_c, here 2 pi 25 mm
     x the rod side's length x h_mix), the film pressures to rtol and rtol p_ref (p_ref: the
     largest of p_in and the pressurised seal's peak asperity pressure, Eq. 44 at its gap),
-    the friction work not at all, every other unknown to rtol and 1e-6; -stroke_ts_rtol /
-    -stroke_ts_atol replace the scene's values."""
+    the friction work not at all, the displacements to rtol and rtol h_c (h_c the contact
+    law's contact gap, h_mix here, ``displacement_scale``) but at least 1e-6, every other
+    unknown to rtol and 1e-6; -stroke_ts_rtol replaces the scene's rtol, -stroke_ts_atol
+    the displacements' atol."""
     from petsc4py import PETSc
     step = stroke[0]
     side = step.side
@@ -197,8 +199,13 @@ def test_tolerances_per_unknown_and_from_the_command_line(stroke):
     assert (rt[v] == 0.0).all() and at[v] == pytest.approx(1e-3 * step.volume_scale)
     assert (at[w] >= 1e300).all()
     assert (rt[p] == 1e-3).all() and at[p] == pytest.approx(1e-3 * step.pressure_scale)
+    ud = step.layout.udofs.ravel()
+    assert step.displacement_scale == 7e-4                # h_mix of Eq. 44
+    assert (rt[ud] == 1e-3).all() and (at[ud] == 1e-6).all()   # 1e-3 h_c is below 1e-6
+    rt2, at2 = step.tolerances(1e-2)
+    assert (rt2[ud] == 1e-2).all() and at2[ud] == pytest.approx(1e-2 * 7e-4, rel=1e-12)
     rest = np.setdiff1d(np.arange(step.n),
-                        np.concatenate([v, np.atleast_1d(w), p]).astype(int))
+                        np.concatenate([v, np.atleast_1d(w), p, ud]).astype(int))
     assert (rt[rest] == 1e-3).all() and (at[rest] == 1e-6).all()
     opts = PETSc.Options("stroke_")
     opts["ts_rtol"], opts["ts_atol"] = "1e-5", "1e-9"
@@ -207,6 +214,7 @@ def test_tolerances_per_unknown_and_from_the_command_line(stroke):
     finally:
         opts.delValue("ts_rtol")
         opts.delValue("ts_atol")
-    assert (rt[rest] == 1e-5).all() and (at[rest] == 1e-9).all()
+    assert (rt[rest] == 1e-5).all() and (at[rest] == 1e-6).all()
+    assert (rt[ud] == 1e-5).all() and (at[ud] == 1e-9).all()
     assert at[v] == pytest.approx(1e-5 * step.volume_scale)
     assert at[p] == pytest.approx(1e-5 * step.pressure_scale)

@@ -415,6 +415,13 @@ class StrokeProblem:
         p, _ = self.rod.pressure(0.0, self.U0)
         return max(fl.p_in, fl.p_out, float(np.max(p)) if p.size else 0.0)
 
+    @property
+    def displacement_scale(self):
+        """u_ref (mm): the contact law's contact gap h_c (``contact_gap``), the separation
+        the film and the asperity contact respond to, as in ``volume_scale``: the
+        displacement whose fraction rtol each step may err by in every displacement."""
+        return float(self.model.law.contact_gap)
+
     def prony_dofs(self):
         """The Prony internal variables' dofs (serial), shaped (cells, 4 Gauss points,
         active terms, 4 components) as :class:`sealts.solid.viscoelastic.PronyTerm` holds
@@ -427,7 +434,14 @@ class StrokeProblem:
         numbering: each unknown's error e_i is held to atol_i + rtol_i |U_i| in the max norm.
         The same weights are the Newton test's (:mod:`sealts.problem.newton_test`).
 
-        * displacements (mm): rtol, and atol (1e-6 mm);
+        * displacements (mm): rtol, and atol = rtol h_c (``displacement_scale``; at least
+          atol). With 1e-6 mm the axial displacements that pass through zero as the
+          friction drags the seal (their error held to a nanometre, where the radial ones
+          beside them err by rtol of some 0.5 mm) set a fifth of the default cycle's
+          stroke steps and more than half of those of a cycle without sealed pressure;
+          held to rtol of the largest displacement (0.7 mm, normwise) the steps grow until
+          Newton fails, and the 30 MPa cycle took twice the Newton iterations
+          (benchmarks/stroke_sensitivity.md);
         * film pressures (MPa): rtol, and atol = rtol p_ref (``pressure_scale``; at least
           atol, for a scene with neither sealed pressure nor contact). With an atol of
           1e-6 MPa the film's near-ambient pressures in the outlet wedge (|p| of a few
@@ -449,15 +463,18 @@ class StrokeProblem:
           the error-controlled state (its own error would be measured against |W|, tens of
           thousands of N mm), and the paper scheme's c0 and qd, algebraic flows.
 
-        ``-stroke_ts_rtol`` and ``-stroke_ts_atol`` on the command line replace ``rtol``
-        and ``atol`` here (PETSc would otherwise ignore them beside per-unknown vectors);
-        ``-stroke_ts_pressure_atol`` (MPa) replaces the film pressures' atol.
+        ``-stroke_ts_rtol`` on the command line replaces ``rtol`` here, and
+        ``-stroke_ts_atol`` (mm) the displacements' atol (PETSc would otherwise ignore them
+        beside per-unknown vectors); ``-stroke_ts_pressure_atol`` (MPa) replaces the film
+        pressures' atol.
         """
         from petsc4py import PETSc
         opts = PETSc.Options(self.problem.prefix)
         rtol = opts.getReal("ts_rtol", float(rtol))
-        atol = opts.getReal("ts_atol", float(atol))
+        atol = float(atol)
         rt, at = np.full(self.n, rtol), np.full(self.n, atol)
+        at[self.layout.udofs.ravel()] = opts.getReal(
+            "ts_atol", max(rtol * self.displacement_scale, atol))
         if self.work is not None:
             at[self.work.wd] = 1e300
         if self.xdofs is not None:
