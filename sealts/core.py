@@ -44,6 +44,8 @@ class Term:
     * ``accepted(t, u)``: the post-step hook, after every accepted step and at the start
       (u full, in serial order); the term's history moves here. A SolveError raised here
       ends the run with its message;
+    * ``nonfinite(t, u)``: what and where a non-finite residual of the term is physically,
+      or None (a run that stops on one names it; by default the first such unknown);
     * ``history_names``: the attributes (arrays) that hook moves, the history not in U: a
       checkpoint saves them (``history()``) and a restarted run puts them back
       (``restore``).
@@ -69,6 +71,10 @@ class Term:
 
     def accepted(self, t, u):
         """Post-step hook: nothing to do for a term without history."""
+
+    def nonfinite(self, t, u):
+        """Its non-finite residual at u in words, or None (the caller names the unknown)."""
+        return None
 
 
 class Constraints:

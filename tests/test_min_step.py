@@ -114,3 +114,30 @@ def test_a_terms_own_exception_is_named_in_one_line(where):
     with pytest.raises(SolveError) as e:
         p.solve_steady(np.ones(1), t=0.75)
     assert str(e.value).startswith(f"the {where} at t = 0.75 s raised")
+
+
+class Breaks(Term):
+    """F = u' + u, whose residual turns non-finite in unknown 1 from t = 0.5 on, whatever u:
+    every retry of the step past it fails (a stand-in for an element that inverts)."""
+
+    def __init__(self, n):
+        self.rows = self.cols = np.arange(n)
+
+    def add_residual(self, t, u, udot, f):
+        f += udot + u
+        if t >= 0.5:
+            f[1] = np.nan
+
+    def jacobian_values(self, t, u, udot, shift):
+        return np.full(self.rows.size, shift + 1.0)
+
+
+def test_a_run_that_gives_up_on_non_finite_residuals_names_the_term_and_where():
+    p = Problem(2, [Breaks(2)])
+    with pytest.raises(SolveError) as e:
+        p.transient(np.ones(2), 0.0, 1.0, 1e-2, rtol=1e-6, atol=1e-9)
+    msg = str(e.value)
+    assert "DIVERGED_STEP_REJECTED" in msg
+    assert "Breaks: not finite at the unknown 1" in msg, msg
+    t = float(msg.split("at t = ")[1].split(" s")[0])
+    assert 0.49 < t <= 0.5

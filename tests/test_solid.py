@@ -223,3 +223,22 @@ def test_free_thermal_expansion_is_stress_free_and_uniform():
     u, _ = solve_static(term, 2 * X.shape[0], 2 * bottom + 1, np.zeros(bottom.size))
     eps = 2e-4 * 40.0
     assert np.abs(u - eps * X.ravel()).max() < 1e-9
+
+
+def test_an_inverted_element_is_named_where_it_is():
+    """Two plane-strain unit squares side by side; the right one's free corner nodes pushed
+    past its left edge (x 2 -> 0.5) turn it inside out (J < 0 at its Gauss points): the
+    residual is not finite and ``nonfinite`` names one element at the right square's
+    undeformed centroid (1.5, 0.5); undeformed, nothing."""
+    X, conn, grid = rectangle(0.0, 2.0, 0.0, 1.0, 2, 1)
+    term = SolidTerm(X, conn, RUBBER, False)
+    u = np.zeros(2 * X.shape[0])
+    assert term.nonfinite(0.0, u) is None
+    right = grid[:, -1]
+    u[2 * right] = -1.5
+    f = np.zeros(u.size)
+    term.add_residual(0.0, u, None, f)
+    assert not np.isfinite(f).all()
+    msg = term.nonfinite(0.0, u)
+    assert msg.startswith("1 element(s) of the seal invert")
+    assert "r = 1.5, z = 0.5 mm" in msg, msg

@@ -243,7 +243,12 @@ class Problem:
     def _assemble_residual(self, t, U, Udot, F):
         u = self.local(U).copy()
         ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
-        self._add_local(F, self.residual(t, u, ud))
+        f = self.residual(t, u, ud)
+        if not np.isfinite(f).all() and np.isfinite(ud).all():
+            # kept for the message of a run that stops on it (``_nonfinite``); a U' that is
+            # itself not finite is TS's own (a step below the resolution of t)
+            self._nonfinite_at = (t, u, ud.copy())
+        self._add_local(F, f)
 
     def _assemble_jacobian(self, t, U, Udot, shift, J, P):
         u = self.local(U).copy()
@@ -470,6 +475,33 @@ class Problem:
         what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
         return f"; the fastest change: {what}"
 
+    def _nonfinite(self, ts):
+        """Where TS's last Newton solve failed on a non-finite residual: the first term whose
+        part is not finite and what it says of it (``Term.nonfinite``; else the unknown of
+        its first such row), at the last residual that was not finite with a finite U' (""
+        otherwise)."""
+        R = PETSc.SNES.ConvergedReason
+        nan = {getattr(R, n) for n in ("DIVERGED_FNORM_NAN", "DIVERGED_FUNCTION_NANORINF")
+               if hasattr(R, n)}
+        if ts.getSNES().getConvergedReason() not in nan or self._nonfinite_at is None:
+            return ""
+        t, u, udot = self._nonfinite_at
+        for term in self.terms:
+            f = np.zeros(self.n_local)
+            try:
+                term.add_residual(t, u, udot, f)
+            except Exception:        # the stop's own reason stands
+                continue
+            bad = np.flatnonzero(~np.isfinite(f))
+            if bad.size:
+                what = term.nonfinite(t, u)
+                if what is None:
+                    i = int(bad[0]) if self._replicated else int(self.dofs.serial[bad[0]])
+                    what = "not finite at the " + (self.dofs.describe(i) if hasattr(
+                        self.dofs, "describe") else f"unknown {i}")
+                return f": the residual at t = {t:.6g} s, {type(term).__name__}: {what}"
+        return ""
+
     def _check_pace(self, t, u, t_end, rtol, atol):
         """A run whose steps have shrunk so far that, at the pace of its last PACE_WINDOW
         accepted steps, the rest would take more than PACE_LIMIT further steps, crawls: it
@@ -557,6 +589,7 @@ class Problem:
         targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
         targets = [s for s in targets if s > t0]      # a resumed run that had finished
         self._dt_min = None
+        self._nonfinite_at = None
         self._offset = (0, 0)
         self._pace = deque(maxlen=PACE_WINDOW + 1)    # the last accepted steps' t
         if resume is not None:
@@ -620,8 +653,8 @@ class Problem:
                 reason = ts.getConvergedReason()
                 if reason < 0:
                     raise SolveError(f"time stepping failed at t = {ts.getTime():.6g} s "
-                                     f"({_reason(PETSc.TS, reason)}); try a smaller -ts_dt "
-                                     "or -ts_adapt_dt_min")
+                                     f"({_reason(PETSc.TS, reason)}){self._nonfinite(ts)}; "
+                                     "try a smaller -ts_dt or -ts_adapt_dt_min")
                 u = self.gather(X).copy()
                 for obs in observers:
                     obs.stop(ts.getTime(), u)

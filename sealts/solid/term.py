@@ -89,6 +89,18 @@ class SolidTerm(Term):
     def jacobian_values(self, t, u, udot, shift):
         return self._evaluate(u, t)[1].ravel()
 
+    def nonfinite(self, t, u):
+        """The inverted elements (J <= 0 at a Gauss point) in words, the first by its
+        reference centroid."""
+        f = self._evaluate(u, t, tangent=False)[4]
+        J = (f[..., 0] * f[..., 3] - f[..., 1] * f[..., 2]) * f[..., 4]
+        bad = np.flatnonzero((J <= 0.0).any(axis=1))
+        if not bad.size:
+            return None
+        r, z = self.X[self.conn[bad[0]]].mean(axis=0)
+        return (f"{bad.size} element(s) of the seal invert (J <= 0), the first at r = "
+                f"{r:.4g}, z = {z:.4g} mm (undeformed): the rubber is crushed or folds there")
+
     def energy(self, u):
         return self._evaluate(u, tangent=False)[2]
 
