@@ -129,6 +129,9 @@ def _check_petsc_options(PETSc, given=()):
             ksp.setType(PETSc.KSP.Type.PREONLY)
             ksp.getPC().setType(PETSc.PC.Type.LU)
             ts.setFromOptions()
+            # the event options (-ts_event_tol, -ts_event_monitor, ...) are read where a
+            # problem's terms set events (sealts.problem.Problem._set_events)
+            ts.setEventHandler([1], [False], lambda ts, t, U, f: None)
         finally:
             ts.destroy()
     for name, meaning in SEALTS_OPTIONS.items():

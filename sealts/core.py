@@ -48,11 +48,24 @@ class Term:
       or None (a run that stops on one names it; by default the first such unknown);
     * ``history_names``: the attributes (arrays) that hook moves, the history not in U: a
       checkpoint saves them (``history()``) and a restarted run puts them back
-      (``restore``).
+      (``restore``);
+    * ``event_directions``: one direction (+1, -1, 0) per event of the term: TS locates
+      in time where ``event_values(t, u)`` (one indicator per event, u full, serial order)
+      crosses zero that way (``TSSetEventHandler``), then calls ``event(t, u, which)``
+      (``which``: the indices of the events that fired) and restarts its integrator. A
+      change of the term there is discrete, recorded and located, not made between steps.
     """
 
     rows = cols = _NONE
     history_names = ()
+    event_directions = ()
+
+    def event_values(self, t, u):
+        """The indicator of each event at the state u (see the class docstring)."""
+        return np.zeros(0)
+
+    def event(self, t, u, which):
+        """What the term does when its events ``which`` fire at t (the state u)."""
 
     def history(self):
         """The term's history not in U (name -> array), for a checkpoint."""

@@ -420,6 +420,42 @@ class Problem:
         SOLVERS[self.prefix or ""] = _solver_in_force(ts.getSNES(), ts)
         return ts
 
+    def _set_events(self, ts, raised):
+        """The terms' events (``Term.event_directions``) as TS events: located in time
+        where an indicator crosses zero, then the term's ``event`` and a restart of the
+        integrator (the DAE changed there). Every rank gathers U (collective) and evaluates
+        its own terms' indicators. A SolveError of an event ends the run with its message
+        (``raised``, as the monitor's)."""
+        terms = [x for x in self.terms if getattr(x, "event_directions", ())]
+        if not terms:
+            return
+        sizes = [len(x.event_directions) for x in terms]
+        ends = np.cumsum(sizes)
+
+        def call(f, *args):
+            try:
+                return f(*args)
+            except (SolveError, interrupt.Interrupted) as e:
+                raised.append(e)
+                raise
+
+        def indicator(ts, t, X, fvalue):
+            u = self.gather(X).copy()
+            fvalue[:] = call(lambda: np.concatenate(
+                [np.asarray(x.event_values(t, u), float) for x in terms]))
+
+        def post(ts, events, t, X, forward):
+            u = self.gather(X).copy()
+            events = np.asarray(events, int)
+            for x, end, size in zip(terms, ends, sizes):
+                mine = events[(events >= end - size) & (events < end)] - (end - size)
+                if mine.size:
+                    call(x.event, t, u, mine)
+            ts.restartStep()
+
+        ts.setEventHandler([d for x in terms for d in x.event_directions],
+                           [False] * int(ends[-1]), indicator, post)
+
     def accepted(self, t, u):
         """Every term's post-step hook at the accepted state u (full, serial order)."""
         for term in self.terms:
@@ -623,6 +659,7 @@ class Problem:
                 raise
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
+        self._set_events(ts, raised)
         self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * max(float(t_end - t0), 1e-300))
         self._last_u, self._last_dt = last_u, None
         if resume is not None:

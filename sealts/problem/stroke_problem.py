@@ -71,7 +71,11 @@ after the Section's fields.
 * dry (``stroke.film = false``): no film and no leakage unknowns; the rod side keeps the
   pressure penetration of step 2, and the asperity contact carries the rod's whole load.
 
-Not yet in the stroke: updating the pressure penetration front during the stroke.
+* the pressure-penetration fronts (``stroke.front = "moving"``, the default):
+  :class:`sealts.solid.moving_front.MovingFront` moves them to where the seal's traction
+  puts them at located TS events, whenever that target drifts more than
+  ``stroke.front_tolerance`` edges from them; ``"kept"`` leaves them where steps 1-2 did
+  (the series' ``front_drift`` then says how far the traction would move them).
 """
 import numpy as np
 
@@ -85,6 +89,7 @@ from ..contact.slip_state_friction import SlipStateFriction
 from ..core import Constraints, StepTooSmall
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
+from ..solid.moving_front import MovingFront
 from ..solid.pressure import front_drift
 from ..solid.stabilisation import SnapStabilisation
 from ..solid.term import SolidTerm
@@ -183,6 +188,10 @@ class StrokeProblem:
             on_rod = np.array([tuple(sorted(e)) in rod_edges for e in old.edges], bool)
             self.load = old.rebuilt([lambda t: fl.p_in, lambda t: fl.p_out][:len(old.pressures)],
                                     udofs=ud, dry=on_rod)
+        # the fronts follow the seal's traction at TS events (on every rank, like the guards)
+        self.front = (MovingFront(self.load, self.node_contact_pressure,
+                                  scene.stroke.front_tolerance)
+                      if self.load is not None and scene.stroke.front == "moving" else None)
         # the viscous stabilisation, over this rank's own nodes (lumped volumes)
         c, c_snap = scene.stroke.stabilisation, scene.stroke.snap_stabilisation
         self.node_volume = model.stab.m.reshape(-1, 2)[:, 0]
@@ -241,7 +250,9 @@ class StrokeProblem:
                                 self.groove_friction, self.load,
                                 self.work if with_leakage else None) if t is not None]
         stab = [self.stab] if with_leakage else []
-        return (self.guards + [solid] + stab + ([prony] if prony is not None else [])
+        # the moving front sets the load's wetting at each t: before the load
+        front = [self.front] if with_leakage and self.front is not None else []
+        return (self.guards + [solid] + stab + ([prony] if prony is not None else []) + front
                 + self.layout.on_root(boundary))
 
     def node_contact_pressure(self, t, U):
@@ -288,6 +299,8 @@ class StrokeProblem:
         U = start.solve_steady(U, 0.0)
         if self.load is not None:
             U = self._settle_front(start, U)
+        if self.front is not None:
+            self.front.reset(0.0)            # from the fronts settled with the film
         self.problem.counters.newton += start.counters.newton
         self._relaxed_from = U
         if self.prony is not None:
@@ -391,6 +404,9 @@ class StrokeProblem:
                 # seal's contact would put them
                 "front_drift": (front_drift(self.load, self.node_contact_pressure(t, U), t)
                                 if self.load is not None else 0.0),
+                # the wetted boundary (edges, the fronts' reaches summed): a moving front's
+                # record
+                "wetted_edges": float(sum(self.load.reach)) if self.load is not None else 0.0,
                 # the groove walls' penalty penetration, p / k (mm)
                 "wall_penetration": float(self.groove.node_pressures(t, U).max()) / self.groove.k}
         if self.groove.edge is not None:     # how far the seal is into the extrusion gap, mm

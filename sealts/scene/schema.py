@@ -176,7 +176,11 @@ class Mount:
     t_hold: float = option(2.0, gt=1.0, doc="pseudo-time of the hold after the ramp (ramp: 0..1)")
     dt: float = option(0.02, gt=0.0, doc="first pseudo-time step")
     stabilisation: float = option(1e-3, unit="MPa s/mm^2", ge=0.0,
-                                  doc="viscous stabilisation c of rigid-body modes")
+                                  doc="viscous stabilisation c of rigid-body modes in steps "
+                                      "1-2; the pressurised front is c's limit c -> 0 up to "
+                                      "1e-3 (1e-4 gives the same), from 3e-3 on it settles "
+                                      "elsewhere (+8 % net leakage on the default cycle: "
+                                      "benchmarks/stroke_sensitivity.md)")
     penalty: float = option(1e4, unit="MPa/mm", gt=0.0, doc="groove wall penalty stiffness")
 
 
@@ -257,6 +261,14 @@ class Stroke:
                                            "minimum; the summary's snapped_at), for the rest "
                                            "of the run, if above stroke.stabilisation; 0: "
                                            "a snap stops the run")
+    front: str = option("moving", choices=("moving", "kept"),
+                        doc="the pressure-penetration front during the stroke: moving, set "
+                            "to where the seal's traction puts it at located TS events "
+                            "(sealts/solid/moving_front.py); kept, where steps 1-2 left it")
+    front_tolerance: float = option(0.1, unit="edges", gt=0.0,
+                                    doc="front = moving: the drift between a front and where "
+                                        "the seal's traction puts it at which it follows "
+                                        "(boundary edges)")
 
 
 @dataclass(frozen=True)

@@ -177,6 +177,8 @@ class Stroke(Step):
             "peak_friction_instroke": float(np.abs(F[v < 0]).max()) if (v < 0).any() else 0.0,
             "friction_work": rows[-1]["W_friction"],
             "h_min": float(min(r["h_min"] for r in rows)),
+            # the moving fronts' events (stroke.front = "moving"; 0 when kept)
+            "front_moves": int(stroke.front.moves.sum()) if stroke.front is not None else 0,
             "wall_penetration": float(max(r["wall_penetration"] for r in rows)),
             "front_drift": float(max(r["front_drift"] for r in rows)),
             # V_in - V_out against the change of the film's content (StrokeProblem.scalars'
@@ -201,7 +203,7 @@ class Stroke(Step):
             if changed:
                 state.parts["stroke"]["restart_changes"] = changed
         drift = state.parts["stroke"]["front_drift"]
-        if drift > FRONT_DRIFT_NOTE:
+        if drift > FRONT_DRIFT_NOTE and stroke.front is None:
             k = int(np.argmax([r["front_drift"] for r in rows]))
             say(f"note: the stroke kept the pressure-penetration front where its start put "
                 f"it; at t = {rows[k]['t']:.4g} s the seal's contact would have moved it by "

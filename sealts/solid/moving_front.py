@@ -1,0 +1,123 @@
+"""The pressure-penetration front during the stroke, moved at located TS events.
+
+Step 2 leaves each front where the sealing margin g = p_c + phi p - p - p_crit of
+:mod:`sealts.solid.pressure` crosses zero (``target_reach``). During the stroke the seal's
+contact pressures p_c change with the friction, the film and the rod's motion, and the
+target moves with them. Each front i carries two TS events on its drift
+d_i(t, U) = target_i - b_i (edges), b_i where the front is going (its reach when at rest):
+
+    d_i - tol = 0   crossing upwards:   the fluid gets further (the front advances),
+    d_i + tol = 0   crossing downwards: the seal closes on the wetted edge (it recedes),
+
+located in time by TS (``TSSetEventHandler``; BDF restarts there,
+:meth:`sealts.problem.Problem._set_events`). From an event at t_e the front moves to the
+target b_i it had there, linearly from where it stands over T = t_e - t_last (t_last its
+previous event, or the stroke's start): at the mean pace its target drifted by tol before;
+a target that runs on fires the next event sooner, and the next ramp is faster. A jump instead of the
+ramp has no solution at any step size where the seal is near a fold: at the default
+cycle's reversal a 0.1-edge jump of the groove-bottom front made every Newton solve fail
+down to dt = 1e-10 s, since the quasi-static seal must follow a jump of its load at once
+while the film's squeeze term holds the rod side. Between events the drift stays within
++-tol edges (``stroke.front_tolerance``): the front follows the seal's traction with a
+hysteresis of tol, and every change is recorded (``moves``; the series' ``wetted_edges``)
+and placed where the state asks for it, never made between steps.
+
+The wetting of the load at t is this term's: it sets the load's reach for each evaluation
+(it comes before the load in the Problem's terms). The target is where g first turns
+positive walking from the fluid's entry, so a region of the seal that lifts off all at once
+moves it by many edges; a target that reaches the atmosphere side stops the run at once
+(blow-by). A front whose every move points it back (each position's equilibrium pointing
+at the other) would fire without end: after ``MAX_FLIPS`` reversals each within
+``FLIP_WINDOW`` of the last, the run stops and says where.
+"""
+import numpy as np
+
+from ..core import SolveError, Term
+
+MAX_FLIPS = 8            # reversals of one front, each ...
+FLIP_WINDOW = 1e-6       # ... within this time (s) of the last: a front that flips on end
+MIN_RAMP = 1e-6          # s: the shortest ramp (two events of one front at one time)
+
+
+class MovingFront(Term):
+    """The fronts of a pressure load (:class:`sealts.solid.pressure.PressureLoad` or
+    :class:`sealts.solid.fluid_loads.FluidLoads`) moved towards their targets from TS
+    events. ``contact_pressure(t, U)``: the nodal wall and rod contact pressures (MPa) at
+    a state; ``tol``: the drift (edges) at which a front follows; ``t0``: the start."""
+
+    history_names = ("ramps", "moves", "flips")
+
+    def __init__(self, load, contact_pressure, tol=0.1, t0=0.0):
+        if not tol > 0.0:
+            raise ValueError(f"MovingFront: tol must be > 0 edges, not {tol}")
+        self.load, self.contact_pressure, self.tol = load, contact_pressure, float(tol)
+        self.event_directions = (1, -1) * len(load.reach)
+        self.reset(t0)
+
+    def reset(self, t0):
+        """Start from the load's present fronts at t0, no moves yet."""
+        r = np.array(self.load.reach, float)
+        n = r.size
+        # per front: start t_e, duration T, reach a at t_e, target b
+        self.ramps = np.column_stack([np.full(n, float(t0)), np.ones(n), r, r])
+        self.moves = np.zeros(n)          # events per front
+        self.flips = np.zeros(n)          # reversals in a row, each within FLIP_WINDOW
+
+    def reach_at(self, t):
+        """Each front's reach (edges) at t."""
+        t_e, T, a, b = self.ramps.T
+        return a + (b - a) * np.clip((t - t_e) / T, 0.0, 1.0)
+
+    def wet_at(self, t):
+        """Set the load's wetting to the fronts' at t."""
+        r = self.reach_at(t)
+        if not np.array_equal(r, self.load.reach):
+            self.load.set_reach([float(x) for x in r])
+
+    def add_residual(self, t, u, udot, f):
+        self.wet_at(t)
+
+    def jacobian_values(self, t, u, udot, shift):
+        self.wet_at(t)
+        return np.zeros(0)
+
+    def accepted(self, t, u):
+        self.wet_at(t)
+
+    def drift(self, t, u):
+        """target - reach per front (edges) at the state u."""
+        self.wet_at(t)
+        target = self.load.target_reach(self.contact_pressure(t, u), t)
+        return np.array(target, float) - self.reach_at(t)
+
+    def event_values(self, t, u):
+        # the target against where the front is going (the ramp's end): a target that runs
+        # on after an event fires again at +-tol from there
+        self.wet_at(t)
+        target = self.load.target_reach(self.contact_pressure(t, u), t)
+        d = np.array(target, float) - self.ramps[:, 3]
+        return np.column_stack([d - self.tol, d + self.tol]).ravel()
+
+    def event(self, t, u, which):
+        self.wet_at(t)
+        now = self.reach_at(t)
+        target = np.array(self.load.target_reach(self.contact_pressure(t, u), t), float)
+        for i in sorted({int(k) // 2 for k in which}):
+            t_last, _, a_last, b_last = self.ramps[i]
+            d_new, d_last = np.sign(target[i] - now[i]), np.sign(b_last - a_last)
+            flip = self.moves[i] > 0 and d_new == -d_last and t - t_last <= FLIP_WINDOW
+            self.flips[i] = self.flips[i] + 1 if flip else 0
+            if self.flips[i] >= MAX_FLIPS:
+                raise SolveError(
+                    f"the pressure-penetration front {i + 1} flips between "
+                    f"{now[i]:.3f} and {target[i]:.3f} edges from its entry at t = {t:.6g} "
+                    "s: each position's equilibrium points at the other (the seal's "
+                    "contact there is bistable)")
+            self.ramps[i] = (t, max(t - t_last, MIN_RAMP), now[i], target[i])
+            self.moves[i] += 1
+        # a target on the atmosphere side is blow-by now, not at the ramp's end
+        ends = np.where(np.isin(np.arange(now.size), [int(k) // 2 for k in which]),
+                        target, now)
+        self.load.set_reach([float(x) for x in ends])
+        self.load.check_blow_by(t)
+        self.wet_at(t)
