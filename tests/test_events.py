@@ -130,3 +130,15 @@ def test_the_history_restores_the_ramps():
     mf2.restore(saved)
     assert mf2.reach_at(1.5) == pytest.approx(mf.reach_at(1.5))
     assert list(mf2.moves) == [1, 0]
+
+
+def test_a_stop_just_after_an_event_is_stepped_past():
+    """The step that crosses the event ends at a stop (t = 0.695): PETSc's post-event steps
+    follow the trajectory planned before the event, which the stop ended, and left a step
+    of zero to go on with (every later step failed: U' = dU / 0)."""
+    term = Relax()
+    p = Problem(1, [term])
+    y = p.transient(np.zeros(1), 0.0, 3.0, 1e-2, stops=[0.695], rtol=1e-8, atol=1e-10)
+    (t_e, _, _), = term.fired
+    assert t_e == pytest.approx(np.log(2.0), abs=1e-5)
+    assert y[0] == pytest.approx(3.0 - 2.5 * np.exp(-(3.0 - np.log(2.0))), rel=1e-5)

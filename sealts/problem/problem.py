@@ -620,6 +620,7 @@ class Problem:
         their owner).
         """
         last, last_u = [None], [None]
+        taken = [None]        # the last accepted step's size
         raised = []
         observers = list(observers)
         targets = sorted({float(s) for s in stops if t0 < s < t_end} | {float(t_end)})
@@ -641,6 +642,10 @@ class Problem:
             if t == last[0]:
                 return
             t_prev, last[0] = last[0], t
+            if t_prev is not None and t > t_prev:
+                taken[0] = t - t_prev
+            # a non-finite residual is reported by the stop it causes, not by a later one
+            self._nonfinite_at = None
             try:
                 interrupt.check(self.comm)   # between steps, before anything is written
                 u = self.gather(X).copy()
@@ -675,6 +680,10 @@ class Problem:
                 ts.setMaxTime(target)
                 if k and self.restart_at_stops:   # what a run resumed here does
                     ts.restartStep()
+                if k and not ts.getTimeStep() > 0.0 and taken[0]:
+                    # an event's post-event steps follow the trajectory planned before it;
+                    # one that a stop ended leaves a step of zero to go on with
+                    ts.setTimeStep(taken[0])
                 try:
                     ts.solve(X)
                 except PETSc.Error as e:
