@@ -13,14 +13,15 @@ located in time by TS (``TSSetEventHandler``; BDF restarts there,
 :meth:`sealts.problem.Problem._set_events`). From an event at t_e the front moves to the
 target b_i it had there, linearly from where it stands over T = t_e - t_last (t_last its
 previous event, or the stroke's start): at the mean pace its target drifted by tol before;
-a target that runs on fires the next event sooner, and the next ramp is faster. A jump instead of the
-ramp has no solution at any step size where the seal is near a fold: at the default
-cycle's reversal a 0.1-edge jump of the groove-bottom front made every Newton solve fail
-down to dt = 1e-10 s, since the quasi-static seal must follow a jump of its load at once
-while the film's squeeze term holds the rod side. Between events the drift stays within
-+-tol edges (``stroke.front_tolerance``): the front follows the seal's traction with a
-hysteresis of tol, and every change is recorded (``moves``; the series' ``wetted_edges``)
-and placed where the state asks for it, never made between steps.
+a target that runs on fires the next event sooner, and the next ramp is faster. A jump
+instead of the ramp can have no solution at any step size where the seal is near a fold
+(the default cycle's reversal, benchmarks/stroke_sensitivity.md): the quasi-static seal
+must follow a jump of its load at once while the film's squeeze term holds the rod side.
+Between events each target stays within +-tol edges of where its front is going
+(``stroke.front_tolerance``): the front follows the seal's traction with a hysteresis of
+tol, its lag behind the target is the series' ``front_drift``, and every change is recorded
+(``moves``; the series' ``wetted_edges``) and placed where the state asks for it, never
+made between steps.
 
 The wetting of the load at t is this term's: it sets the load's reach for each evaluation
 (it comes before the load in the Problem's terms). The target is where g first turns
@@ -83,12 +84,6 @@ class MovingFront(Term):
 
     def accepted(self, t, u):
         self.wet_at(t)
-
-    def drift(self, t, u):
-        """target - reach per front (edges) at the state u."""
-        self.wet_at(t)
-        target = self.load.target_reach(self.contact_pressure(t, u), t)
-        return np.array(target, float) - self.reach_at(t)
 
     def event_values(self, t, u):
         # the target against where the front is going (the ramp's end): a target that runs
