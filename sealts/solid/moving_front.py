@@ -97,7 +97,8 @@ class MovingFront(Term):
         self.wet_at(t)
         now = self.reach_at(t)
         target = np.array(self.load.target_reach(self.contact_pressure(t, u), t), float)
-        for i in sorted({int(k) // 2 for k in which}):
+        fired = sorted({int(k) // 2 for k in which})
+        for i in fired:
             t_last, _, a_last, b_last = self.ramps[i]
             d_new, d_last = np.sign(target[i] - now[i]), np.sign(b_last - a_last)
             flip = self.moves[i] > 0 and d_new == -d_last and t - t_last <= FLIP_WINDOW
@@ -111,8 +112,8 @@ class MovingFront(Term):
             self.ramps[i] = (t, max(t - t_last, MIN_RAMP), now[i], target[i])
             self.moves[i] += 1
         # a target on the atmosphere side is blow-by now, not at the ramp's end
-        ends = np.where(np.isin(np.arange(now.size), [int(k) // 2 for k in which]),
-                        target, now)
+        ends = now.copy()
+        ends[fired] = target[fired]
         self.load.set_reach([float(x) for x in ends])
         self.load.check_blow_by(t)
         self.wet_at(t)
