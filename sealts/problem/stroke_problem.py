@@ -86,7 +86,8 @@ from ..contact.groove_friction import GrooveFriction
 from ..contact.rigid import GrooveContact, RodContact, node_contact_pressure, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..contact.slip_state_friction import SlipStateFriction
-from ..core import Constraints, StepTooSmall
+from ..core import Constraints, SolveError, StepTooSmall
+from ..film.odd_even import ODD_EVEN_WARN, odd_even, odd_even_note
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
 from ..solid.moving_front import MovingFront
@@ -145,6 +146,7 @@ class StrokeProblem:
                                     g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
                                     corner_radius=g.rho, edge=g.edge)
         self.film = self.leakage = self.xdofs = None
+        self.last_odd_even = (0.0, 0.0)      # (t, indicator) of the last scalars taken
         self.vdofs = np.zeros(0, np.int64)
         boundary = [self.rod, self.groove]
         if wet:
@@ -375,9 +377,11 @@ class StrokeProblem:
         y = self.side.y(U)
         touching = rod.law.touching(h)
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
-        q_in = q_out = shear = load_fluid = p_max = v_film = 0.0
+        q_in = q_out = shear = load_fluid = p_max = v_film = zigzag = 0.0
         volumes = np.zeros(2)
         if f is not None:
+            zigzag = odd_even(y, h, f.h_floor, rod.law.contact_gap)
+            self.last_odd_even = (t, zigzag)
             q_in, q_out = self.leakage.flows(t, U, Udot)
             shear = float(f.shear_forces(t, U, Udot).sum())
             load_fluid = float(f.forces(t, U).sum())
@@ -400,6 +404,8 @@ class StrokeProblem:
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
                 "asperity_contact_length": length, "p_fluid_max": p_max,
                 "W_friction": work, "F_stabilisation": f_stab, "V_film": v_film,
+                # the film gap's node-to-node mode over the contact (sealts.film.odd_even)
+                "odd_even": zigzag,
                 # edges between the kept pressure-penetration fronts and where the
                 # seal's contact would put them
                 "front_drift": (front_drift(self.load, self.node_contact_pressure(t, U), t)
@@ -522,6 +528,10 @@ class StrokeProblem:
                                           observers=observers, rtol=rtol, atol=atol,
                                           resume=resume)
         except StepTooSmall as e:
+            t_z, zigzag = self.last_odd_even
+            if zigzag > ODD_EVEN_WARN:      # the cause, where the film's state shows it
+                raise SolveError(f"{e}; {odd_even_note(zigzag, t_z, self.scene.mesh.h_contact)}"
+                                 ) from None
             if self.stab.c_snap <= self.stab.c_base:
                 raise StepTooSmall(f"{e}; if the seal snaps there (a fold of its quasi-static "
                                    "equilibrium), stroke.snap_stabilisation = 1e-3 (above "

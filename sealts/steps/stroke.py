@@ -16,6 +16,7 @@ import time
 import numpy as np
 
 from ..core import StepTooSmall
+from ..film.odd_even import ODD_EVEN_WARN, odd_even_note
 from ..io.fields import FieldSeries
 from ..io.observers import Fields, Profiles, Series, StepLine, solver_columns
 from ..problem.stroke_problem import StrokeProblem
@@ -40,6 +41,22 @@ class StrokeColumns:
             Udot = (U - self.last[1]) / (t - self.last[0])
         self.last = (t, U)
         return self.stroke.scalars(t, U, Udot)
+
+
+class OddEvenNote:
+    """Warns once, at the first accepted state whose film gap alternates from node to node
+    over the contact (the ``odd_even`` column, :mod:`sealts.film.odd_even`); adds no
+    column."""
+
+    def __init__(self, say, h_contact):
+        self.say, self.h_contact, self.warned = say, h_contact, False
+
+    def __call__(self, t, U, info, row):
+        if not self.warned and row.get("odd_even", 0.0) > ODD_EVEN_WARN:
+            self.warned = True
+            self.say(f"warning: {odd_even_note(row['odd_even'], t, self.h_contact)}",
+                     force=True)
+        return {}
 
 
 class CycleIntegrals:
@@ -137,7 +154,8 @@ class Stroke(Step):
         integrals, columns = CycleIntegrals(), StrokeColumns(stroke)
         line = StepLine("stroke step", [("v", "v", 1.0, "mm/s"), ("Newton", "newton", 1, ""),
                                         ("min h", "h_min", 1e3, "um")])
-        series = Series(writer, [columns, solver_columns, integrals], say, line)
+        series = Series(writer, [columns, solver_columns, integrals,
+                                 OddEvenNote(say, scene.mesh.h_contact)], say, line)
         wanted = sorted(set(st.output_times) | {0.0, st.t_end})
         writer.path("stroke_fields.h5")
         fields = Fields(FieldSeries(writer.path("stroke_fields.xdmf"), model.mesh.X,
@@ -181,6 +199,8 @@ class Stroke(Step):
             "front_moves": int(stroke.front.moves.sum()) if stroke.front is not None else 0,
             "wall_penetration": float(max(r["wall_penetration"] for r in rows)),
             "front_drift": float(max(r["front_drift"] for r in rows)),
+            # the film gap's largest node-to-node mode over the contact (sealts.film.odd_even)
+            "odd_even": float(max(r.get("odd_even", 0.0) for r in rows)),
             # V_in - V_out against the change of the film's content (StrokeProblem.scalars'
             # V_film): the fluid the film does not account for (mm^3)
             "film_balance": (rows[-1]["V_in"] - rows[-1]["V_out"]

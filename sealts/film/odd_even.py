@@ -1,0 +1,64 @@
+"""The film gap's odd-even (node-to-node) mode over the contact: the sign of a contact mesh
+too coarse for the film over a soft contact law.
+
+Near the contact the film's balance (Eq. 13, :mod:`sealts.film.reynolds_fv`) carries the
+gap like a concentration. With the seal's surface answering the pressure with a local
+stiffness S = dp/dh (the asperity law's dp_s/dh plus the seal's own, pi E' / (2 L) for a
+half-space at the mesh's shortest wavelength 2 L),
+
+    dh/dt + d/dy (v h / 2 - k S dh/dy) = 0,   k = Phi_p h^3 / (12 eta),
+
+advection at v/2 against a diffusivity k S. Where the element's Peclet number
+Pe = |v| L / (2 k S) exceeds 2, a central scheme no longer damps a gap that alternates
+from node to node, and an element's flux, whose averages of 1/k and c/k weigh a linear gap
+symmetrically, hardly sees one: the film and the contact settle into a sawtooth, the
+minimum gap jumps between steps and TS crawls. The paper's law (Eq. 44) keeps S large
+wherever the film is thin; Greenwood and Williamson's summits with the rubber's modulus do
+not, so the film rides on the seal's own stiffness, which grows as the mesh is refined
+(Pe ~ L^2): a fine enough contact mesh resolves it (the meshes measured: README,
+"Greenwood-Williamson").
+
+The indicator: at each interior node whose deviation d_i from the straight line through
+its two neighbours has the other sign at both neighbours, z_i = |d_i| / 2 (a pure sawtooth
+of amplitude A gives A; the same node-to-node measure as :func:`sealts.io.metrics.ripple`,
+the paper report's, which takes the largest over a band); its 90th percentile over the
+contact zone (h below the law's contact gap) against the mean gap there. It uses h_eff of :mod:`sealts.film.gap` (here in numpy, once per accepted step),
+so the floor's flat zone under deep asperity contact counts as flat.
+"""
+import numpy as np
+
+# the indicator from which the stroke warns: a sawtooth is of the order of the mean gap, a
+# resolved film far below (the values measured: README, "Greenwood-Williamson")
+ODD_EVEN_WARN = 0.2
+# fewer contact nodes than this: no indicator
+MIN_NODES = 5
+
+
+def odd_even(y, h, h_floor, contact_gap):
+    """The odd-even indicator (module docstring) of the gaps ``h`` (mm) at the positions
+    ``y`` (mm, increasing); 0 where fewer than MIN_NODES nodes lie below ``contact_gap``
+    (mm)."""
+    y, h = np.asarray(y, float), np.asarray(h, float)
+    zone = np.flatnonzero(h < contact_gap)
+    if zone.size < MIN_NODES:
+        return 0.0
+    y, g = y[zone[0]:zone[-1] + 1], h[zone[0]:zone[-1] + 1]
+    if h_floor > 0.0:
+        g = np.where(g >= 2.0 * h_floor, g,
+                     h_floor * (1.0 + np.exp(np.minimum(g / h_floor - 2.0, 0.0))))
+    w = (y[1:-1] - y[:-2]) / (y[2:] - y[:-2])        # weight of the right neighbour
+    d = g[1:-1] - ((1.0 - w) * g[:-2] + w * g[2:])
+    s = np.sign(d)
+    turns = np.zeros(d.size, bool)
+    turns[1:-1] = (s[1:-1] != s[:-2]) & (s[1:-1] != s[2:])
+    z = np.where(turns, 0.5 * np.abs(d), 0.0)
+    return float(np.percentile(z, 90.0) / np.abs(g).mean())
+
+
+def odd_even_note(value, t, h_contact):
+    """One sentence naming the mode and the cure, for a warning or a stop's message."""
+    return (f"the film's gap alternates from node to node over the contact at t = {t:.6g} s "
+            f"(odd-even amplitude {value:.2g} of the mean gap): the contact mesh "
+            f"(mesh.h_contact = {h_contact:g} mm) is too coarse for the film over this "
+            f"contact law, whose surface stiffness cannot damp it; a finer mesh.h_contact "
+            f"resolves it (README, Greenwood-Williamson: 0.0125 mm or finer)")

@@ -1,0 +1,90 @@
+"""The film gap's odd-even mode (sealts.film.odd_even): the indicator measures a sawtooth by
+its amplitude and ignores smooth films and the gap floor's flat zone; the coarse O-ring on
+Greenwood-Williamson's soft summits settles into the sawtooth (its film is
+convection-dominated at the 0.1 mm contact mesh) and the stroke stops naming it, where the
+paper's stiff law on the same mesh and window stays smooth.
+
+Why the bounds: a sawtooth of amplitude A on a smooth film of mean gap g reads A / g (the
+90th percentile of half the deviation from the neighbours' line at the nodes where it
+turns; the film's own
+curvature adds a few per cent where it is steep); a smooth film, even one as curved as an
+EHL inlet, has no turning nodes and reads 0. The coarse GW stroke's
+sawtooth is of the order of the mean gap (README, "Greenwood-Williamson"), far above the
+warning threshold; the paper's law keeps it two orders below.
+"""
+import numpy as np
+import pytest
+
+from conftest import mount_and_pressurise, scene, stroke_of
+from sealts.core import Recorder, SolveError
+from sealts.film.odd_even import ODD_EVEN_WARN, odd_even
+
+FLOOR = 8.6e-5         # mm, the paper's O-ring's gap floor
+GAP = 1.9e-3           # mm, below which the contact is counted (GW's contact gap there)
+
+
+def film(n=101):
+    """A smooth EHL-like gap (mm): a steep inlet, a flat contact, a constriction and an
+    outlet, all below GAP."""
+    y = np.linspace(0.0, 1.0, n)
+    return y, 1e-3 * (0.6 + 1.2 * np.exp(-y / 0.08) - 0.15 * np.exp(-((y - 0.9) / 0.04) ** 2)
+                      + 0.1 * (y - 0.5) ** 2)
+
+
+def test_a_smooth_film_reads_zero():
+    y, h = film()
+    assert odd_even(y, h, FLOOR, GAP) == 0.0
+
+
+def test_a_sawtooth_reads_its_amplitude_over_the_mean_gap():
+    y, h = film()
+    for a in (1e-4, 3e-4):       # 0.17 and 0.5 of the mean gap: about the warning's size
+        saw = h + a * (-1.0) ** np.arange(h.size)
+        assert odd_even(y, saw, FLOOR, GAP) == pytest.approx(a / saw.mean(), rel=0.05)
+
+
+def test_the_floor_flattens_deep_asperity_contact():
+    """Mean planes 2 um into each other, alternating by 0.2 um: the film's gap there is the
+    floor, flat to exp(-20), whatever the summits do."""
+    y = np.linspace(0.0, 1.0, 60)
+    h = -2e-3 + 2e-4 * (-1.0) ** np.arange(60)
+    assert odd_even(y, h, FLOOR, GAP) < 1e-6
+    assert odd_even(y, h + 2.5e-3, FLOOR, GAP) > 0.3     # the same sawtooth above the floor
+
+
+def test_fewer_than_five_contact_nodes_read_zero():
+    y = np.linspace(0.0, 1.0, 40)
+    h = np.full(40, 5e-3)
+    h[10:14] = 1e-4 * np.array([1.0, 5.0, 1.0, 5.0])
+    assert odd_even(y, h, FLOOR, GAP) == 0.0
+
+
+def _window(law_keys, tmp_path, t_end=0.35):
+    """The coarse O-ring (0.1 / 0.4 mm), no solid friction, stroked to t_end; the series'
+    odd_even column by accepted state, and the run's error (None if it finished)."""
+    s = scene("oring_stroke_gw" if law_keys else "oring_stroke",
+              mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
+              stroke={"friction": False, "t_end": t_end, "output_times": []})
+    stroke = stroke_of(mount_and_pressurise(s))
+    seen = []
+    rec = Recorder(lambda t, U: seen.append(stroke.scalars(t, U)["odd_even"]))
+    U0 = stroke.start()
+    try:
+        stroke.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, observers=[rec])
+        error = None
+    except SolveError as e:
+        error = str(e)
+    return np.array(seen), error
+
+
+def test_the_coarse_gw_stroke_stops_naming_the_odd_even_mode(tmp_path):
+    seen, error = _window(True, tmp_path)
+    assert seen.max() > 2.0 * ODD_EVEN_WARN, seen.max()
+    assert error is not None and "alternates from node to node" in error, error
+    assert "mesh.h_contact = 0.1 mm" in error
+
+
+def test_the_papers_law_on_the_same_mesh_stays_smooth(tmp_path):
+    seen, error = _window(False, tmp_path)
+    assert error is None, error
+    assert seen.max() < 0.25 * ODD_EVEN_WARN, seen.max()
