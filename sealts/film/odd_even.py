@@ -14,24 +14,32 @@ from node to node, and an element's flux, whose averages of 1/k and c/k weigh a 
 symmetrically, hardly sees one: the film and the contact settle into a sawtooth, the
 minimum gap jumps between steps and TS crawls. The paper's law (Eq. 44) keeps S large
 wherever the film is thin; Greenwood and Williamson's summits with the rubber's modulus do
-not, so the film rides on the seal's own stiffness, which grows as the mesh is refined
-(Pe ~ L^2): a fine enough contact mesh resolves it (the meshes measured: README,
-"Greenwood-Williamson").
+not, nor does Eq. 44 with an h_mix far below the film (a smooth rod), so the film rides
+on the seal's own stiffness, which grows as the mesh is refined (Pe ~ L^2): a fine enough
+contact mesh resolves it (the meshes measured: README, "Why GW needs a fine contact
+mesh").
 
 The indicator: at each interior node whose deviation d_i from the straight line through
 its two neighbours has the other sign at both neighbours, z_i = |d_i| / 2 (a pure sawtooth
 of amplitude A gives A; the same node-to-node measure as :func:`sealts.io.metrics.ripple`,
-the paper report's, which takes the largest over a band); its 90th percentile over the
-contact zone (h below the law's contact gap) against the mean gap there. It uses h_eff of :mod:`sealts.film.gap` (here in numpy, once per accepted step),
-so the floor's flat zone under deep asperity contact counts as flat.
+the paper report's, which takes the largest over a band); the mean of z over WINDOW
+consecutive nodes against their mean gap, the largest such ratio over the contact zone (h
+below the law's contact gap): a sawtooth over the whole contact reads A / h, one confined
+to a few nodes (as before the outlet's constriction) reads its own ratio. It uses h_eff of
+:mod:`sealts.film.gap` (here in numpy, once per accepted step), so the floor's flat zone
+under deep asperity contact counts as flat.
 """
 import numpy as np
 
-# the indicator from which the stroke warns: a sawtooth is of the order of the mean gap, a
-# resolved film far below (the values measured: README, "Greenwood-Williamson")
-ODD_EVEN_WARN = 0.2
-# fewer contact nodes than this: no indicator
+# the indicator from which the stroke warns, and from which a stall within the last
+# ODD_EVEN_STEPS accepted steps is put down to the mode: a sawtooth is of the order of the
+# mean gap, a resolved film far below (the values measured: README, "Why GW needs a fine
+# contact mesh")
+ODD_EVEN_WARN = 0.3
+ODD_EVEN_STEPS = 200
+# fewer contact nodes than this: no indicator; nodes per window
 MIN_NODES = 5
+WINDOW = 8
 
 
 def odd_even(y, h, h_floor, contact_gap):
@@ -52,13 +60,16 @@ def odd_even(y, h, h_floor, contact_gap):
     turns = np.zeros(d.size, bool)
     turns[1:-1] = (s[1:-1] != s[:-2]) & (s[1:-1] != s[2:])
     z = np.where(turns, 0.5 * np.abs(d), 0.0)
-    return float(np.percentile(z, 90.0) / np.abs(g).mean())
+    n = min(WINDOW, z.size)
+    box = np.ones(n) / n
+    return float((np.convolve(z, box, "valid")
+                  / np.convolve(np.abs(g[1:-1]), box, "valid")).max())
 
 
 def odd_even_note(value, t, h_contact):
     """One sentence naming the mode and the cure, for a warning or a stop's message."""
     return (f"the film's gap alternates from node to node over the contact at t = {t:.6g} s "
-            f"(odd-even amplitude {value:.2g} of the mean gap): the contact mesh "
+            f"(odd-even amplitude {value:.2g} of the local mean gap): the contact mesh "
             f"(mesh.h_contact = {h_contact:g} mm) is too coarse for the film over this "
             f"contact law, whose surface stiffness cannot damp it; a finer mesh.h_contact "
-            f"resolves it (README, Greenwood-Williamson: 0.0125 mm or finer)")
+            f"resolves it (README, \"Why GW needs a fine contact mesh\")")

@@ -77,6 +77,8 @@ after the Section's fields.
   ``stroke.front_tolerance`` edges from them; ``"kept"`` leaves them where steps 1-2 did
   (the series' ``front_drift`` then says how far the traction would move them).
 """
+from collections import deque
+
 import numpy as np
 
 from ..contact.extrusion_guard import extrusion
@@ -87,7 +89,7 @@ from ..contact.rigid import GrooveContact, RodContact, node_contact_pressure, tr
 from ..contact.rod_motion import motion_from_scene
 from ..contact.slip_state_friction import SlipStateFriction
 from ..core import Constraints, SolveError, StepTooSmall
-from ..film.odd_even import ODD_EVEN_WARN, odd_even, odd_even_note
+from ..film.odd_even import ODD_EVEN_STEPS, ODD_EVEN_WARN, odd_even, odd_even_note
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
 from ..solid.moving_front import MovingFront
@@ -146,7 +148,8 @@ class StrokeProblem:
                                     g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
                                     corner_radius=g.rho, edge=g.edge)
         self.film = self.leakage = self.xdofs = None
-        self.last_odd_even = (0.0, 0.0)      # (t, indicator) of the last scalars taken
+        # (indicator, t) of the last ODD_EVEN_STEPS states whose scalars were taken
+        self.odd_even_recent = deque(maxlen=ODD_EVEN_STEPS)
         self.vdofs = np.zeros(0, np.int64)
         boundary = [self.rod, self.groove]
         if wet:
@@ -381,7 +384,7 @@ class StrokeProblem:
         volumes = np.zeros(2)
         if f is not None:
             zigzag = odd_even(y, h, f.h_floor, rod.law.contact_gap)
-            self.last_odd_even = (t, zigzag)
+            self.odd_even_recent.append((zigzag, t))
             q_in, q_out = self.leakage.flows(t, U, Udot)
             shear = float(f.shear_forces(t, U, Udot).sum())
             load_fluid = float(f.forces(t, U).sum())
@@ -528,8 +531,8 @@ class StrokeProblem:
                                           observers=observers, rtol=rtol, atol=atol,
                                           resume=resume)
         except StepTooSmall as e:
-            t_z, zigzag = self.last_odd_even
-            if zigzag > ODD_EVEN_WARN:      # the cause, where the film's state shows it
+            zigzag, t_z = max(self.odd_even_recent, default=(0.0, 0.0))
+            if zigzag > ODD_EVEN_WARN:      # the cause, where the film's recent states show it
                 raise SolveError(f"{e}; {odd_even_note(zigzag, t_z, self.scene.mesh.h_contact)}"
                                  ) from None
             if self.stab.c_snap <= self.stab.c_base:
