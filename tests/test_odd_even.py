@@ -70,10 +70,20 @@ def test_fewer_than_five_contact_nodes_read_zero():
     assert odd_even(y, h, FLOOR, GAP) == 0.0
 
 
-def _window(law_keys, tmp_path, t_end=0.35):
-    """The coarse O-ring (0.1 / 0.4 mm), no solid friction, stroked to t_end; the series'
-    odd_even column by accepted state, and the run's error (None if it finished)."""
-    s = scene("oring_stroke_gw" if law_keys else "oring_stroke",
+def test_the_stroke_warns_once_above_the_threshold():
+    from sealts.steps.stroke import OddEvenNote
+    said = []
+    note = OddEvenNote(lambda msg, force=False: said.append(msg), 0.1)
+    for t, v in enumerate((0.0, 0.5 * ODD_EVEN_WARN, 2.0 * ODD_EVEN_WARN, 3.0 * ODD_EVEN_WARN)):
+        assert note(float(t), None, None, {"odd_even": v}) == {}
+    assert len(said) == 1 and "t = 2 s" in said[0] and "mesh.h_contact = 0.1 mm" in said[0]
+
+
+def _window(gw, tmp_path, t_end=0.35):
+    """The coarse O-ring (0.1 / 0.4 mm) on Greenwood-Williamson (``gw``) or the paper's law,
+    no solid friction, stroked to t_end: the odd_even column by accepted state, and the
+    run's error (None if it finished)."""
+    s = scene("oring_stroke_gw" if gw else "oring_stroke",
               mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
               stroke={"friction": False, "t_end": t_end, "output_times": []})
     stroke = stroke_of(mount_and_pressurise(s))

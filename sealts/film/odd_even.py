@@ -19,20 +19,24 @@ on the seal's own stiffness, which grows as the mesh is refined (Pe ~ L^2): a fi
 contact mesh resolves it (the meshes measured: README, "Why GW needs a fine contact
 mesh").
 
-The indicator: at each interior node whose deviation d_i from the straight line through
-its two neighbours has the other sign at both neighbours, z_i = |d_i| / 2 (a pure sawtooth
-of amplitude A gives A; the same node-to-node measure as :func:`sealts.io.metrics.ripple`,
-the paper report's, which takes the largest over a band); the mean of z over WINDOW
-consecutive nodes against their mean gap, the largest such ratio over the contact zone (h
-below the law's contact gap): a sawtooth over the whole contact reads A / h, one confined
-to a few nodes (as before the outlet's constriction) reads its own ratio. It uses h_eff of
-:mod:`sealts.film.gap` (here in numpy, once per accepted step), so the floor's flat zone
-under deep asperity contact counts as flat.
+The indicator, over the contact zone (the nodes from the first to the last whose h lies
+below the law's contact gap), on the regularised gap g = h_eff (:mod:`sealts.film.gap`, so
+the floor's flat zone under deep asperity contact counts as flat):
+
+    d_i = g_i - [(1 - w_i) g_(i-1) + w_i g_(i+1)],   w_i = (y_i - y_(i-1)) / (y_(i+1) - y_(i-1)),
+    z_i = |d_i| / 2  where d_(i-1) and d_(i+1) both have the other sign as d_i, else 0,
+    I   = max_j  sum_(i in W_j) z_i / sum_(i in W_j) g_i,
+
+W_j the windows of WINDOW consecutive nodes. d is the deviation from the straight line
+through the two neighbours (:func:`neighbour_deviation`, which the paper report's
+:func:`sealts.io.metrics.ripple` also takes), so a sawtooth of amplitude A gives z = A: over
+the whole contact I = A / g, and one confined to a few nodes (as before the outlet's
+constriction) reads against the gap there. Computed once per accepted step.
 """
 import numpy as np
 
 # the indicator from which the stroke warns, and from which a stall within the last
-# ODD_EVEN_STEPS accepted steps is put down to the mode: a sawtooth is of the order of the
+# ODD_EVEN_STEPS accepted steps names the mode in its message: a sawtooth is of the order of the
 # mean gap, a resolved film far below (the values measured: README, "Why GW needs a fine
 # contact mesh")
 ODD_EVEN_WARN = 0.3
@@ -42,28 +46,36 @@ MIN_NODES = 5
 WINDOW = 8
 
 
+def neighbour_deviation(y, h):
+    """d_i = h_i minus the straight line through its two neighbours, at the interior nodes
+    of ``y`` (increasing; the midpoint's weight where two neighbours share a y)."""
+    span = y[2:] - y[:-2]
+    w = np.divide(y[1:-1] - y[:-2], span, out=np.full(span.size, 0.5), where=span > 0.0)
+    return h[1:-1] - ((1.0 - w) * h[:-2] + w * h[2:])
+
+
 def odd_even(y, h, h_floor, contact_gap):
-    """The odd-even indicator (module docstring) of the gaps ``h`` (mm) at the positions
+    """The odd-even indicator I (module docstring) of the gaps ``h`` (mm) at the positions
     ``y`` (mm, increasing); 0 where fewer than MIN_NODES nodes lie below ``contact_gap``
     (mm)."""
+    # numba's kernel, imported here: sealts.io.metrics takes neighbour_deviation from this
+    # module, and the results reader loads no solver (tests/test_results.py)
+    from .quantities import effective_gap
     y, h = np.asarray(y, float), np.asarray(h, float)
     zone = np.flatnonzero(h < contact_gap)
     if zone.size < MIN_NODES:
         return 0.0
-    y, g = y[zone[0]:zone[-1] + 1], h[zone[0]:zone[-1] + 1]
-    if h_floor > 0.0:
-        g = np.where(g >= 2.0 * h_floor, g,
-                     h_floor * (1.0 + np.exp(np.minimum(g / h_floor - 2.0, 0.0))))
-    w = (y[1:-1] - y[:-2]) / (y[2:] - y[:-2])        # weight of the right neighbour
-    d = g[1:-1] - ((1.0 - w) * g[:-2] + w * g[2:])
+    k = slice(zone[0], zone[-1] + 1)
+    y, g = y[k], effective_gap(np.ascontiguousarray(h[k]), h_floor)
+    d = neighbour_deviation(y, g)
     s = np.sign(d)
     turns = np.zeros(d.size, bool)
     turns[1:-1] = (s[1:-1] != s[:-2]) & (s[1:-1] != s[2:])
     z = np.where(turns, 0.5 * np.abs(d), 0.0)
     n = min(WINDOW, z.size)
-    box = np.ones(n) / n
-    return float((np.convolve(z, box, "valid")
-                  / np.convolve(np.abs(g[1:-1]), box, "valid")).max())
+    box = np.ones(n)
+    gap = np.convolve(np.abs(g[1:-1]), box, "valid")
+    return float(np.max(np.convolve(z, box, "valid") / np.where(gap > 0.0, gap, np.inf)))
 
 
 def odd_even_note(value, t, h_contact):

@@ -10,6 +10,8 @@ mm^3/s. Only numpy is needed.
 """
 import numpy as np
 
+from ..film.odd_even import neighbour_deviation
+
 
 def contact_band(prof, threshold=1e-6):
     """(y_lo, y_hi): the span of y where the asperity pressure exceeds ``threshold`` (MPa).
@@ -58,9 +60,7 @@ def ripple(prof, band):
     y, h = prof["y"][m], prof["h"][m]
     if h.size < 3:
         return 0.0
-    w = (y[1:-1] - y[:-2]) / (y[2:] - y[:-2])       # weight of the right neighbour
-    line = (1.0 - w) * h[:-2] + w * h[2:]
-    return float(0.5 * np.abs(h[1:-1] - line).max())
+    return float(0.5 * np.abs(neighbour_deviation(y, h)).max())
 
 
 def film_change(prof, ref, band):

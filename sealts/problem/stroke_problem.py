@@ -88,7 +88,7 @@ from ..contact.groove_friction import GrooveFriction
 from ..contact.rigid import GrooveContact, RodContact, node_contact_pressure, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..contact.slip_state_friction import SlipStateFriction
-from ..core import Constraints, SolveError, StepTooSmall
+from ..core import Constraints, Observer, StepTooSmall
 from ..film.odd_even import ODD_EVEN_STEPS, ODD_EVEN_WARN, odd_even, odd_even_note
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
@@ -99,6 +99,20 @@ from ..solid.term import SolidTerm
 from ..solid.viscoelastic_solid import ViscoelasticSolid
 from .film_model import flow_factors_of
 from .problem import Problem
+
+
+class OddEvenWatch(Observer):
+    """The film gap's odd-even indicator of each accepted state into its stroke's
+    ``odd_even_recent`` (a stall's message names the mode from them)."""
+
+    def __init__(self, stroke):
+        self.stroke = stroke
+
+    def accepted(self, t, u, info):
+        st = self.stroke
+        h = st.side.gap(t, u)
+        st.odd_even_recent.append((odd_even(st.side.y(u), h, st.film.h_floor,
+                                            st.rod.law.contact_gap), t))
 
 
 class StrokeProblem:
@@ -148,7 +162,7 @@ class StrokeProblem:
                                     g.z_walls, penalty=g.k, delta=g.delta, udofs=ud,
                                     corner_radius=g.rho, edge=g.edge)
         self.film = self.leakage = self.xdofs = None
-        # (indicator, t) of the last ODD_EVEN_STEPS states whose scalars were taken
+        # (indicator, t) of the run's last ODD_EVEN_STEPS accepted states (OddEvenWatch)
         self.odd_even_recent = deque(maxlen=ODD_EVEN_STEPS)
         self.vdofs = np.zeros(0, np.int64)
         boundary = [self.rod, self.groove]
@@ -384,7 +398,6 @@ class StrokeProblem:
         volumes = np.zeros(2)
         if f is not None:
             zigzag = odd_even(y, h, f.h_floor, rod.law.contact_gap)
-            self.odd_even_recent.append((zigzag, t))
             q_in, q_out = self.leakage.flows(t, U, Udot)
             shear = float(f.shear_forces(t, U, Udot).sum())
             load_fluid = float(f.forces(t, U).sum())
@@ -526,24 +539,33 @@ class StrokeProblem:
         rtol, atol = self.tolerances(rtol)
         t0 = 0.0 if resume is None else resume["t"]
         dt0 = dt0 if resume is None else resume["dt"]
+        self.odd_even_recent.clear()
+        observers = ([OddEvenWatch(self)] if self.film is not None else []) + list(observers)
         try:
             return self.problem.transient(U0, t0, t_end, dt0, stops=stops,
                                           observers=observers, rtol=rtol, atol=atol,
                                           resume=resume)
         except StepTooSmall as e:
-            zigzag, t_z = max(self.odd_even_recent, default=(0.0, 0.0))
-            if zigzag > ODD_EVEN_WARN:      # the cause, where the film's recent states show it
-                raise SolveError(f"{e}; {odd_even_note(zigzag, t_z, self.scene.mesh.h_contact)}"
-                                 ) from None
+            note = self._odd_even_note()
             if self.stab.c_snap <= self.stab.c_base:
-                raise StepTooSmall(f"{e}; if the seal snaps there (a fold of its quasi-static "
-                                   "equilibrium), stroke.snap_stabilisation = 1e-3 (above "
-                                   "stroke.stabilisation) gives the snap a finite speed",
-                                   t=e.t) from None
-            if self.stab.snapped_at >= 0.0:
-                raise StepTooSmall(f"{e}; stuck again with the snap stabilisation (c = "
-                                   f"{self.stab.c:g} MPa s/mm^2, for a snap at t = "
-                                   f"{self.stab.snapped_at:.6g} s); a finer contact mesh "
-                                   "(mesh.h_contact) resolved some such stops",
-                                   t=e.t) from None
-            raise
+                msg = (f"{e}{note}; if the seal snaps there (a fold of its quasi-static "
+                       "equilibrium), stroke.snap_stabilisation = 1e-3 (above "
+                       "stroke.stabilisation) gives the snap a finite speed")
+            elif self.stab.snapped_at >= 0.0:
+                msg = (f"{e}{note}; stuck again with the snap stabilisation (c = "
+                       f"{self.stab.c:g} MPa s/mm^2, for a snap at t = "
+                       f"{self.stab.snapped_at:.6g} s); a finer contact mesh (mesh.h_contact) "
+                       "resolved some such stops")
+            else:
+                msg = f"{e}{note}"
+            stall = StepTooSmall(msg, t=e.t)
+            stall.odd_even = note       # the Stroke step carries it past its snap retry
+            raise stall from None
+
+    def _odd_even_note(self):
+        """"; <the mode and its cure>" if the film's gap alternated from node to node within
+        the last ODD_EVEN_STEPS accepted states (sealts.film.odd_even), else ""."""
+        zigzag, t = max(self.odd_even_recent, default=(0.0, 0.0))
+        if zigzag <= ODD_EVEN_WARN:
+            return ""
+        return "; " + odd_even_note(zigzag, t, self.scene.mesh.h_contact)

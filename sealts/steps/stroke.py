@@ -121,7 +121,14 @@ class Stroke(Step):
             state.say(f"stroke: the seal snaps at t = {e.t:.6g} s ({e}); going on from "
                       f"t = {back.t:.6g} s with the snap stabilisation c = {c:g} MPa s/mm^2",
                       force=True)
-            self._run(state, back, snapped_at=e.t)
+            try:
+                self._run(state, back, snapped_at=e.t)
+            except StepTooSmall as again:
+                # the film's odd-even mode seen before the first stall, if not again
+                seen = getattr(e, "odd_even", "")
+                if seen and not getattr(again, "odd_even", ""):
+                    raise StepTooSmall(f"{again}{seen}", t=again.t) from None
+                raise
             part = state.parts["stroke"]
             part["snap_stabilised_from"] = back.t
             part["wall_time_s"] = time.perf_counter() - t_wall    # both attempts
@@ -165,6 +172,8 @@ class Stroke(Step):
         outputs = [series, Profiles(writer, stroke.profile, PROFILES, wanted), fields]
         if back is not None:      # the outputs and the state as they stood at its stop
             U = back.U
+            for r in back.rows:   # a checkpoint from before the odd-even column: unmeasured
+                r.setdefault("odd_even", np.nan)
             series.rows = list(back.rows)
             writer.restore_series(back.rows)
             writer.restore_profiles(PROFILES, back.profiles)
@@ -200,7 +209,7 @@ class Stroke(Step):
             "wall_penetration": float(max(r["wall_penetration"] for r in rows)),
             "front_drift": float(max(r["front_drift"] for r in rows)),
             # the film gap's largest node-to-node mode over the contact (sealts.film.odd_even)
-            "odd_even": float(max(r.get("odd_even", 0.0) for r in rows)),
+            "odd_even": float(np.nanmax([r.get("odd_even", np.nan) for r in rows] + [0.0])),
             # V_in - V_out against the change of the film's content (StrokeProblem.scalars'
             # V_film): the fluid the film does not account for (mm^3)
             "film_balance": (rows[-1]["V_in"] - rows[-1]["V_out"]
