@@ -73,9 +73,11 @@ def test_fewer_than_five_contact_nodes_read_zero():
 def test_the_stroke_warns_once_above_the_threshold():
     from sealts.steps.stroke import OddEvenNote
     said = []
-    note = OddEvenNote(lambda msg, force=False: said.append(msg), 0.1)
+    recent = []
+    note = OddEvenNote(lambda msg, force=False: said.append(msg), 0.1, recent)
     for t, v in enumerate((0.0, 0.5 * ODD_EVEN_WARN, 2.0 * ODD_EVEN_WARN, 3.0 * ODD_EVEN_WARN)):
-        assert note(float(t), None, None, {"odd_even": v}) == {}
+        recent.append((v, float(t)))
+        assert note(float(t), None, None, {}) == {"odd_even": v}
     assert len(said) == 1 and "t = 2 s" in said[0] and "mesh.h_contact = 0.1 mm" in said[0]
 
 
@@ -88,7 +90,7 @@ def _window(gw, tmp_path, t_end=0.35):
               stroke={"friction": False, "t_end": t_end, "output_times": []})
     stroke = stroke_of(mount_and_pressurise(s))
     seen = []
-    rec = Recorder(lambda t, U: seen.append(stroke.scalars(t, U)["odd_even"]))
+    rec = Recorder(lambda t, U: seen.append(stroke.odd_even_recent[-1][0]))
     U0 = stroke.start()
     try:
         stroke.run(U0, s.stroke.t_end, s.stroke.dt, s.stroke.rtol, observers=[rec])

@@ -103,7 +103,8 @@ from .problem import Problem
 
 class OddEvenWatch(Observer):
     """The film gap's odd-even indicator of each accepted state into its stroke's
-    ``odd_even_recent`` (a stall's message names the mode from them)."""
+    ``odd_even_recent``, computed once per state: a stall's message names the mode from
+    them, the stroke step's series column reads the last one."""
 
     def __init__(self, stroke):
         self.stroke = stroke
@@ -394,10 +395,9 @@ class StrokeProblem:
         y = self.side.y(U)
         touching = rod.law.touching(h)
         length = float(np.ptp(y[touching])) if touching.sum() > 1 else 0.0
-        q_in = q_out = shear = load_fluid = p_max = v_film = zigzag = 0.0
+        q_in = q_out = shear = load_fluid = p_max = v_film = 0.0
         volumes = np.zeros(2)
         if f is not None:
-            zigzag = odd_even(y, h, f.h_floor, rod.law.contact_gap)
             q_in, q_out = self.leakage.flows(t, U, Udot)
             shear = float(f.shear_forces(t, U, Udot).sum())
             load_fluid = float(f.forces(t, U).sum())
@@ -420,8 +420,6 @@ class StrokeProblem:
                 "V_in": float(volumes[0]), "V_out": float(volumes[1]), "h_min": float(h.min()),
                 "asperity_contact_length": length, "p_fluid_max": p_max,
                 "W_friction": work, "F_stabilisation": f_stab, "V_film": v_film,
-                # the film gap's node-to-node mode over the contact (sealts.film.odd_even)
-                "odd_even": zigzag,
                 # edges between the kept pressure-penetration fronts and where the
                 # seal's contact would put them
                 "front_drift": (front_drift(self.load, self.node_contact_pressure(t, U), t)

@@ -44,19 +44,19 @@ class StrokeColumns:
 
 
 class OddEvenNote:
-    """Warns once, at the first accepted state whose film gap alternates from node to node
-    over the contact (the ``odd_even`` column, :mod:`sealts.film.odd_even`); adds no
-    column."""
+    """The ``odd_even`` column, the film gap's node-to-node mode over the contact
+    (:mod:`sealts.film.odd_even`) as the stroke's own observer computed it for this state
+    (0 without a film), and a warning once, at the first state above ODD_EVEN_WARN."""
 
-    def __init__(self, say, h_contact):
-        self.say, self.h_contact, self.warned = say, h_contact, False
+    def __init__(self, say, h_contact, recent):
+        self.say, self.h_contact, self.recent, self.warned = say, h_contact, recent, False
 
     def __call__(self, t, U, info, row):
-        if not self.warned and row.get("odd_even", 0.0) > ODD_EVEN_WARN:
+        value = self.recent[-1][0] if self.recent and self.recent[-1][1] == t else 0.0
+        if not self.warned and value > ODD_EVEN_WARN:
             self.warned = True
-            self.say(f"warning: {odd_even_note(row['odd_even'], t, self.h_contact)}",
-                     force=True)
-        return {}
+            self.say(f"warning: {odd_even_note(value, t, self.h_contact)}", force=True)
+        return {"odd_even": value}
 
 
 class CycleIntegrals:
@@ -162,7 +162,8 @@ class Stroke(Step):
         line = StepLine("stroke step", [("v", "v", 1.0, "mm/s"), ("Newton", "newton", 1, ""),
                                         ("min h", "h_min", 1e3, "um")])
         series = Series(writer, [columns, solver_columns, integrals,
-                                 OddEvenNote(say, scene.mesh.h_contact)], say, line)
+                                 OddEvenNote(say, scene.mesh.h_contact, stroke.odd_even_recent)],
+                        say, line)
         wanted = sorted(set(st.output_times) | {0.0, st.t_end})
         writer.path("stroke_fields.h5")
         fields = Fields(FieldSeries(writer.path("stroke_fields.xdmf"), model.mesh.X,
