@@ -3,6 +3,7 @@ import sys
 import tomllib
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from sealts.core import Recorder  # noqa: F401  (tests import it from here)
@@ -107,6 +108,17 @@ def stroke_of(state, s=None):
     steps 1-2."""
     from sealts.problem.stroke_problem import StrokeProblem
     return StrokeProblem(state.model, state.u, s or state.scene, state.load)
+
+
+def slips_off_the_kinks(rng, m, gamma_crit, width=1e-3):
+    """m elastic slips (mm) from -1.5 to 1.5 gamma_crit, none within ``width`` gamma_crit of
+    a kink of the friction law (phi's blend from 0.5, its saturation and the flow at 1), so
+    that central differences over a smaller step see a smooth law."""
+    x = rng.uniform(-1.5, 1.5, m)
+    for k in (0.5, 1.0):
+        near = np.abs(np.abs(x) - k) < width
+        x[near] = np.sign(x[near]) * (k + 2 * width)
+    return x * gamma_crit
 
 
 def coarse_stroke(cache, **stroke):

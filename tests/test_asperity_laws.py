@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import central_differences, scene
+from conftest import central_differences, scene, slips_off_the_kinks
 from sealts.contact.asperity import ExponentialLaw, GreenwoodWilliamson, law_from_scene
 from sealts.contact.asperity.greenwood_williamson import D_HI, D_LO, plane_strain_modulus
 
@@ -94,7 +94,8 @@ def test_coupled_stroke_jacobian_with_greenwood_williamson(tmp_path):
     """The stroke's DAE with the GW law at a state whose rod-side gaps run from 20 sigma_s
     into the rod to beyond the contact gap: the terms the law enters (rod contact and
     friction, film, leakage; the seal's bulk left out, whose stiffness would hide them),
-    every column of the rod side's u_r, u_z and film pressures against central differences
+    every column of the rod side's u_r, u_z, film pressures and the rod friction's slips
+    (from stick to flowing, off phi's and the flow's kinks) against central differences
     in U and U'; bound 1e-6 of each row block's largest entry."""
     from sealts.problem.seal_model import model_from_scene
     from sealts.problem.stroke_problem import StrokeProblem
@@ -114,15 +115,16 @@ def test_coupled_stroke_jacobian_with_greenwood_williamson(tmp_path):
     U[lay.udofs[c, 1]] = rng.uniform(-1e-3, 1e-3, c.size)
     U[lay.film_dofs] = rng.uniform(0.0, 2.0, c.size)
     stroke.film.set_row_scale(0.0, U)
-    stroke.friction.anchors = stroke.friction.s(0.01) - U[lay.udofs[c, 1]] \
-        + rng.uniform(-2e-4, 2e-4, c.size)
+    U[lay.slip_dofs] = slips_off_the_kinks(rng, c.size, s.stroke.gamma_crit)
     Ud = rng.uniform(-1.0, 1.0, stroke.n) * 1e-3
     t, shift = 0.01, 700.0
     from sealts.problem import Problem
     p = Problem(stroke.n, [term for term in stroke.problem.terms if term is not stroke.solid])
     J = p.jacobian_dense(t, U, Ud, shift)
-    blocks = {"ur": lay.udofs[c, 0], "uz": lay.udofs[c, 1], "p": lay.film_dofs}
-    eps = {"ur": 1e-4 * sigma, "uz": 1e-8, "p": 1e-7}   # the film rows curve strongly
+    blocks = {"ur": lay.udofs[c, 0], "uz": lay.udofs[c, 1], "p": lay.film_dofs,
+              "z": lay.slip_dofs}
+    eps = {"ur": 1e-4 * sigma, "uz": 1e-8, "p": 1e-7,    # the film rows curve strongly
+           "z": 1e-6 * s.stroke.gamma_crit}
     fd_u, fd_ud = central_differences(p, t, U, Ud, blocks, eps, stroke.n)
     cols = np.concatenate(list(blocks.values()))
     fd = fd_u[:, cols] + shift * fd_ud[:, cols]

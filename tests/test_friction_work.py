@@ -4,7 +4,7 @@ histories; and what TS integrates against the work summed over the accepted step
 import numpy as np
 import pytest
 
-from conftest import central_differences, scene
+from conftest import central_differences, scene, slips_off_the_kinks
 
 
 @pytest.mark.parametrize("scheme, history", [("fv", "anchors"), ("paper", "state")])
@@ -31,7 +31,7 @@ def test_work_row_jacobian(tmp_path, scheme, history):
     U[lay.udofs[c, 1]] = rng.uniform(-1e-3, 1e-3, c.size)
     U[lay.film_dofs] = rng.uniform(0.0, 2.0, c.size)
     if history == "state":
-        U[lay.slip_dofs] = rng.uniform(-1.2, 1.2, c.size) * s.stroke.gamma_crit
+        U[lay.slip_dofs] = slips_off_the_kinks(rng, c.size, s.stroke.gamma_crit)
     else:
         stroke.friction.anchors = stroke.friction.s(0.01) - U[lay.udofs[c, 1]] \
             + rng.uniform(-2e-4, 2e-4, c.size)
@@ -45,7 +45,7 @@ def test_work_row_jacobian(tmp_path, scheme, history):
     blocks = {"ur": lay.udofs[c, 0], "uz": lay.udofs[c, 1], "p": lay.film_dofs}
     eps = {"ur": 1e-8, "uz": 1e-8, "p": 1e-7}
     if history == "state":
-        blocks["z"], eps["z"] = lay.slip_dofs, 1e-3 * s.stroke.gamma_crit
+        blocks["z"], eps["z"] = lay.slip_dofs, 1e-6 * s.stroke.gamma_crit
     if stroke.xdofs is not None:
         blocks["x"], eps["x"] = stroke.xdofs, 1e-6
     fd_u, fd_ud = central_differences(p, t, U, Ud, blocks, eps, stroke.n)

@@ -115,8 +115,10 @@ def stroke_problem(g, s, state, name):
     """The stroke problem ``name`` at the golden data's friction anchors and row scales."""
     from sealts.problem.stroke_problem import StrokeProblem
     # the golden data predate the stroke's viscous stabilisation (a term of its own, whose
-    # Jacobian tests/test_jacobian.py checks): compared without it
-    s = replace(s, stroke=replace(s.stroke, stabilisation=0.0))
+    # Jacobian tests/test_jacobian.py checks) and the rod friction's slips as TS unknowns
+    # (now the default; tests/test_slip_state_friction.py checks them): compared without
+    # either, the rod friction through its anchors as then
+    s = replace(s, stroke=replace(s.stroke, stabilisation=0.0, friction_history="anchors"))
     if name == "stroke_paper_ve":
         s = replace(s, film=replace(s.film, scheme="paper", flow_factors="patir-cheng",
                                     rq=2.15e-4, gamma=1.0, squeeze=True),

@@ -167,7 +167,7 @@ def test_cli_scene_after_options_and_usage_errors(tmp_path):
     ("[stroke]\nvelocity = 'sine'\ngamma_crit = 0.0\n", "stroke.gamma_crit must be > 0 mm"),
     ("[stroke]\nvelocity = 'sine'\nfilm = 'no'\n", "stroke.film must be true or false"),
     ("[stroke]\nvelocity = 'sine'\nfriction_exponent = 8.0\n",
-     "stroke.friction_exponent is only used with stroke.friction_history = 'state'"),
+     "unknown key stroke.friction_exponent"),
     ("[stroke]\nvelocity = 'sine'\nfriction_history = 'slip'\n",
      "stroke.friction_history must be one of"),
     ("[stroke]\nvelocity = 'sine'\n[viscoelastic]\nprony = 'table2'\n[hold]\np_end = 5.0\n"

@@ -31,12 +31,13 @@ STROKE = {"velocity": "ramp-hold", "t_ramp": 0.01, "t_end": 0.03, "dt": 2.5e-4,
           "output_times": [0.01, 0.02]}
 
 
-def symmetric_scene(cache, v_max, friction=False):
+def symmetric_scene(cache, v_max, friction=False, history="state"):
     """The paper's O-ring on the coarse symmetric mesh with p_in = p_out = 0; the rod ramps
     to v_max in 10 ms and holds to 30 ms."""
     return scene("oring_stroke", mesh={**MESH, "cache": cache},
                  fluid={"p_in": 0.0, "p_out": 0.0},
-                 stroke={**STROKE, "v_max": v_max, "friction": friction})
+                 stroke={**STROKE, "v_max": v_max, "friction": friction,
+                         "friction_history": history})
 
 
 @pytest.fixture(scope="module")
@@ -53,18 +54,19 @@ def mounted(tmp_path_factory):
 class Mirror:
     """The mirror as a signed permutation of a StrokeProblem's unknowns: (M U)[dst] = sign U[src].
     Node i -> its image j(i) with u_r kept and u_z negated; the film pressures in reversed
-    chain order; (V_in, V_out) -> (-V_out, -V_in); the friction work W -> W (v F keeps its
-    sign). Residual rows transform alike (forces like displacements, film balances like
-    pressures, dV/dt - Q like V)."""
+    chain order; the rod friction's axial slips z in reversed chain order, negated;
+    (V_in, V_out) -> (-V_out, -V_in); the friction work W -> W (v F keeps its sign).
+    Residual rows transform alike (forces like displacements, film balances like
+    pressures, slip rates like slips, dV/dt - Q like V)."""
 
     def __init__(self, step, j):
         lay = step.layout
-        ud, pd, vd = lay.udofs, lay.film_dofs, step.vdofs
+        ud, pd, zd, vd = lay.udofs, lay.film_dofs, lay.slip_dofs, step.vdofs
         wd = [step.work.wd] if step.work is not None else []
-        self.src = np.concatenate([ud[:, 0], ud[:, 1], pd, vd, wd])
-        self.dst = np.concatenate([ud[j, 0], ud[j, 1], pd[::-1], vd[::-1], wd])
+        self.src = np.concatenate([ud[:, 0], ud[:, 1], pd, zd, vd, wd])
+        self.dst = np.concatenate([ud[j, 0], ud[j, 1], pd[::-1], zd[::-1], vd[::-1], wd])
         self.sign = np.concatenate([np.ones(len(j)), -np.ones(len(j)), np.ones(pd.size),
-                                    -np.ones(2), np.ones(len(wd))])
+                                    -np.ones(zd.size), -np.ones(2), np.ones(len(wd))])
         assert np.array_equal(np.sort(self.src), np.arange(step.n))     # every unknown
         assert np.array_equal(np.sort(self.dst), np.arange(step.n))
         self.n = step.n
@@ -216,16 +218,18 @@ def test_stroke_at_minus_v_is_the_mirror_image(mounted, strokes):
     assert end["friction_solid"] == 0.0
 
 
-def test_terms_are_mirror_equivariant(mounted):
+@pytest.mark.parametrize("history", ["state", "anchors"])
+def test_terms_are_mirror_equivariant(mounted, history):
     """Every term of the stroke with solid friction (seal, rod contact and its friction,
     groove and its friction on the bottom and both side walls, all pressed here, film with
     shear and surface-normal load, leakage) is mirror-equivariant, at a state that is not symmetric itself: at
     t = 5 ms of the ramp (v = +-50 mm/s, rod travel +-0.125 mm) and for a random U, U' and
-    random friction anchors (elastic slips from stick through the blend to sliding),
+    random elastic slips of the rod friction (from stick through the blend to flowing; as
+    TS unknowns or through its anchors) and groove anchors,
 
         F_-v(t, M U, M U') = M F_+v(t, U, U'),   J_-v = M J_+v M^T,
 
-    and the anchors after an update are the mirror images (rod: a -> -a on the mirrored
+    and the anchors after an update are the mirror images (rod, history "anchors": a -> -a on the mirrored
     chain node; groove: (a_r, a_z) -> (a_r, -a_z) on the mirrored node). The stroke steps'
     own starts fix the film's row scales, which must be mirror images too. Bound 1e-9 of
     each row block's largest entry: both sides add the same numbers in another order
@@ -233,7 +237,8 @@ def test_terms_are_mirror_equivariant(mounted):
     law 1e-3 stronger in -z, or side wall b's tangent tilted by 1e-3, breaks it by
     5e-5 and 2e-5 of the largest force."""
     cache, model, u, j = mounted
-    steps = {sign: StrokeProblem(model, u, symmetric_scene(cache, sign * 100.0, friction=True))
+    steps = {sign: StrokeProblem(model, u, symmetric_scene(cache, sign * 100.0, friction=True,
+                                                           history=history))
              for sign in (1, -1)}
     sp, sm = steps[1], steps[-1]
     for st in (sp, sm):
@@ -250,11 +255,16 @@ def test_terms_are_mirror_equivariant(mounted):
     U[lay.film_dofs] = rng.uniform(-0.5, 1.5, chain.size)
     U[sp.vdofs] = rng.uniform(-1.0, 1.0, 2)
     Ud = rng.uniform(-1e-2, 1e-2, sp.n)
-    # rod friction: elastic slips gamma = s - u_z - a of -2..2 gamma_crit
+    # rod friction: elastic slips of -2..2 gamma_crit, gamma = s - u_z - a through the
+    # anchors or z as unknowns
     rf_p, rf_m = sp.friction, sm.friction
     gc = rf_p.gamma_crit
-    rf_p.anchors = (rf_p.s(t) - U[rf_p.side.uz] - rng.uniform(-2, 2, chain.size) * gc)
-    rf_m.anchors = -rf_p.anchors[::-1]
+    slips = rng.uniform(-2, 2, chain.size) * gc
+    if history == "anchors":
+        rf_p.anchors = (rf_p.s(t) - U[rf_p.side.uz] - slips)
+        rf_m.anchors = -rf_p.anchors[::-1]
+    else:
+        U[lay.slip_dofs] = slips
     # groove friction: anchors within a few gamma_crit of the node, per groove node
     gf_p, gf_m = sp.groove_friction, sm.groove_friction
     nodes = sp.groove.nodes
@@ -270,6 +280,8 @@ def test_terms_are_mirror_equivariant(mounted):
     assert (p_s > 0).sum() > 5 and (phi[p_s > 0] < 0.5).any() and (phi[p_s > 0] > 1).any()
     assert (gf_p.slot_forces(t, U) != 0).any()
     blocks = {"u": lay.udofs.ravel(), "p": lay.film_dofs, "V": sp.vdofs}
+    if history == "state":
+        blocks["z"] = lay.slip_dofs
     Fp = sp.problem.residual(t, U, Ud)
     Fm = sm.problem.residual(t, M(U), M(Ud))
     for name, rows in blocks.items():
@@ -284,9 +296,10 @@ def test_terms_are_mirror_equivariant(mounted):
     for name, rows in blocks.items():
         assert err[rows].max() <= 1e-9 * np.abs(Jp[rows]).max(), name
     # the anchors' return mapping
-    rf_p.update(t, U)
-    rf_m.update(t, M(U))
-    assert np.abs(rf_m.anchors + rf_p.anchors[::-1]).max() <= 1e-12
+    if history == "anchors":
+        rf_p.update(t, U)
+        rf_m.update(t, M(U))
+        assert np.abs(rf_m.anchors + rf_p.anchors[::-1]).max() <= 1e-12
     gf_p.update(t, U)
     gf_m.update(t, M(U))
     assert np.abs(gf_m.anchors[image] - gf_p.anchors * [1.0, -1.0]).max() <= 1e-12

@@ -142,6 +142,7 @@ class GrooveFriction(Term):
         if self.anchors.shape != (m, 2):
             raise ValueError("anchors must give an (r, z) pair per groove node")
         self.p_open = g.k * g.delta * np.log1p(np.exp(-open_gap))
+        self.slide = 0.0             # the last update's largest slide on a wall (mm)
         self.rows = np.concatenate([g.ur, g.ur, g.uz, g.uz]).astype(np.int64)
         self.cols = np.concatenate([g.ur, g.uz, g.ur, g.uz]).astype(np.int64)
 
@@ -198,9 +199,13 @@ class GrooveFriction(Term):
     def update(self, t, u):
         """Return mapping after an accepted step: cap every touched slot's slip at
         gamma_crit (keeping its sign), zero the others. Returns the largest anchor move of a
-        node touching a wall (mm)."""
+        node touching a wall (mm); ``slide`` is the largest slip it took off a touched slot
+        (mm): zero while the seal sticks to its walls, when the update changes no wall's
+        friction and the walls' friction is a function of the state alone."""
         p, _, tan, _, _, _, gamma, _, _ = self._evaluate(t, u)
         touched = p > self.p_open
+        self.slide = float(np.max(np.where(touched, np.abs(gamma) - self.gamma_crit, 0.0),
+                                  initial=0.0))
         kept = np.where(touched, np.clip(gamma, -self.gamma_crit, self.gamma_crit), 0.0)
         new = self._disp(u) + np.einsum("kn,kni->ni", kept, tan)
         on = touched.any(axis=0)
@@ -208,7 +213,7 @@ class GrooveFriction(Term):
         self.anchors = new
         return float(moved.max()) if moved.size else 0.0
 
-    history_names = ("anchors",)
+    history_names = ("anchors", "slide")
 
     def accepted(self, t, u):
         """Post-step hook: the return mapping of ``update``."""

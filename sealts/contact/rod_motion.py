@@ -61,6 +61,13 @@ class RodMotion:
         slope = (vs[k + 1] - vs[k]) / (ts[k + 1] - ts[k])
         return self._s[k] + vs[k] * dt + 0.5 * slope * dt * dt
 
+    def peak_speed(self):
+        """The largest |v| of the law (mm/s), whatever the stroke's end: the sine's, the
+        ramp's and the constant's v_max, the table's largest |v|."""
+        if self.law == "table":
+            return float(np.abs(self.values).max())
+        return abs(self.v_max)
+
     def kinks(self, t_end):
         if self.law == "ramp-hold":
             return [self.t_ramp] if self.t_ramp < t_end else []

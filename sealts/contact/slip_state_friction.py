@@ -1,66 +1,74 @@
 """Rod friction with its elastic slip as a TS unknown: the paper's regularised Coulomb law
 (Eq. 46-48) in rate form, so that TS's error control and step rejection see the history.
 
-The paper's (and ABAQUS's) law is an elastic slip z in series with a Coulomb slider: the
-asperity shear stress is mu_s p_s z / gamma_crit while |z| < gamma_crit (stick), the slider
-slides once |z| reaches gamma_crit. :mod:`sealts.contact.friction` advances it between
-time steps (anchors, a return mapping outside the error estimate). Here z_i is one unknown
-per rod-side node (the ``rod_slip`` field), with the evolution of the Bouc-Wen hysteresis
-(Bouc 1967, Wen 1976; the smooth rate form of elastic-perfectly-plastic friction) in its
-rate-independent form, x = z / gamma_crit:
+The paper's (and ABAQUS's) law is an elastic slip z in series with a Coulomb slider. The
+force is the anchored law's (:mod:`sealts.contact.friction`, Eq. 45-46 lumped as the normal
+force), with z_i one unknown per rod-side node (the ``rod_slip`` field):
 
-    dz_i/dt = w_i - sgn(x) |x|^n max(0, w_i sgn(x))
-            = w_i                           unloading (w x < 0) or |x| << 1: stick
-            = w_i (1 - |x|^n)               loading (w x > 0): slides as |x| -> 1
-    w_i = v(t) - du_z,i/dt                  slip rate of the rod over node i (mm/s)
+    F_i = mu_s(t) p_s(h_i) A L_i phi(z_i / gamma_crit)          (N, +z on the seal),
 
-and the nodal force (Eq. 45-46, lumped as the normal force)
+phi :func:`sealts.contact.friction.saturation`: the stick law x up to 1 - blend, exactly
+sign(x) (the Coulomb limit) from |x| = 1 on, C1 between. The slider is a viscoplastic
+return (Duvaut and Lions 1972; the rate form of a return mapping): the slip follows the
+rod's motion over the node, and whatever exceeds gamma_crit flows off with relaxation time
+eta,
 
-    F_i = mu_s(t) p_s(h_i) A L_i x_i          (N, +z on the seal).
+    dz_i/dt = w_i - psi(z_i) / eta,      w_i = v(t) - du_z,i/dt    (mm/s),
+    psi(z)  = sgn(z) max(|z| - gamma_crit, 0).
 
-Under monotone loading |x| rises from 0 towards 1 with slope 1 - |x|^n: the
-paper's stick stiffness mu_s p_s / gamma_crit at small slip, the Coulomb limit mu_s p_s in
-sliding, and a knee between whose width shrinks with n (95 % of the limit after 1.83, 1.30,
-1.07 gamma_crit of slip for n = 2, 4, 8; the paper's bilinear law at n -> infinity).
-Unloading is elastic with the stick stiffness. A rod at rest (w = 0) leaves z where it is:
-the friction stays locked in. The kink of max(0, y) at y = w sgn(x) = 0 is smoothed,
+* Stick (|z| < gamma_crit): psi = 0, z moves with the rod over the node; its force is the
+  paper's stick stiffness mu_s p_s / gamma_crit (up to the blend). Nothing creeps: a rod
+  at rest (w = 0) leaves the friction locked in, whatever its value.
+* Slide: z settles at sgn(w) (gamma_crit + |w| eta), where phi is saturated, so the force is
+  exactly mu_s p_s A L_i, whatever the overshoot |w| eta.
+* Unloading after a reversal starts once the overshoot has flowed off. Under a smooth
+  reversal (a sine) z follows |w| eta down to gamma_crit as w falls, a lag of order eta in
+  time; after an abrupt reversal from w to -w the lag is a slip of |w| eta ln 2.
+* eta = delta / v_ref (``overshoot`` delta = 0.1 gamma_crit at v_ref, the stroke's largest
+  rod speed): the overshoot and the abrupt reversal's lag stay below 0.1 gamma_crit of
+  slip, a tenth of the stick range.
+* As eta -> 0 this is the anchored law: :meth:`sealts.contact.friction.RodFriction.update`
+  is the same return (the anchor a_i = s - u_z,i - z_i), applied after each step instead of
+  inside it.
 
-    max_eps(y) = (y + sqrt(y^2 + eps^2) - eps) / 2,
+Why not a Bouc-Wen law (dz/dt = w (1 - |x|^n) while loading): its rate switches between
+loading and unloading with the sign of w x. At the edge of a sticking zone w crosses zero
+between Newton iterates and the solve cycled between two states to the iteration limit
+(twice the Newton iterations of the anchors on the coarse cycle;
+benchmarks/stroke_sensitivity.md). Here w enters linearly and the only switch, |z| =
+gamma_crit, lies where phi is already saturated.
 
-exactly 0 at y = 0 (no creep at rest), y - eps/2 for y >> eps and -eps/2 for y << -eps;
-eps (mm/s) is a slip rate far below the rod's. Nodes out of contact keep integrating z
-(their force is zero): a node that touches a sliding rod slides at once.
+Nodes out of contact keep integrating z (their force is zero): a node that touches a
+sliding rod slides at once. The z rows are in mm/s. Exact Jacobian (TS shift a = dU'/dU;
+k = mu_s A):
 
-The z rows are in mm/s. Exact Jacobian (with the TS shift a = dU'/dU; m = max_eps at
-y = w sgn(x)):
-
-    d(z' - g)/dz_i    = a + n |x|^(n-1) m / gamma_crit,
-    d(z' - g)/du_z,i  = a (1 - |x|^n m'(y))       (dw/du_z,i' = -1),
-    d(-F_i)/d(u_r,i, u_z,hi, u_z,lo, z_i) = -mu A (dp L x, p x / 2, -p x / 2, p L / gamma_crit).
+    d(z' - w + psi/eta)/dz_i   = a + [|z_i| > gamma_crit] / eta,
+    d(z' - w + psi/eta)/du_z,i = a                          (dw/du_z,i' = -1),
+    d(-F_i)/d(u_r,i, u_z,hi, u_z,lo, z_i) = -k (dp L phi, p phi / 2, -p phi / 2,
+                                                p L phi' / gamma_crit).
 """
 import numpy as np
 
 from ..core import Term, of_time
+from .friction import check_law, saturation
+
+OVERSHOOT = 0.1          # delta / gamma_crit: the slide's overshoot at the largest rod speed
 
 
-def smooth_max0(y, eps):
-    """max(0, y) smoothed over eps, y (1 + tanh(y / eps)) / 2: exactly 0 at y = 0, y to
-    within exp(-2 y / eps) beyond; and its derivative."""
-    th = np.tanh(y / eps)
-    return 0.5 * y * (1.0 + th), 0.5 * (1.0 + th) + 0.5 * y * (1.0 - th * th) / eps
+def return_rate(w, z, gamma_crit, eta):
+    """g = dz/dt (mm/s) of the module docstring at slip rate w (mm/s) and slip z (mm), and
+    dg/dz (dg/dw is 1)."""
+    excess = np.abs(z) - gamma_crit
+    flowing = excess > 0.0
+    g = w - np.where(flowing, np.sign(z) * excess, 0.0) / eta
+    return g, np.where(flowing, -1.0 / eta, 0.0)
 
 
-def bouc_wen_rate(w, x, n, eps):
-    """g = dz/dt (mm/s) of the module docstring at slip rate w (mm/s) and x = z / gamma_crit,
-    with dg/dw and dg/dx."""
-    sg = np.where(x >= 0.0, 1.0, -1.0)
-    ax = np.abs(x)
-    m, dm = smooth_max0(w * sg, eps)
-    axn1 = ax ** (n - 1)
-    g = w - sg * ax * axn1 * m
-    dg_dw = 1.0 - ax * axn1 * dm                 # d(sg m)/dw = sg^2 dm = dm
-    dg_dx = -n * axn1 * m                        # d(sg |x|^n)/dx = n |x|^(n-1)
-    return g, dg_dw, dg_dx
+def relaxation_time(gamma_crit, v_ref):
+    """eta (s): the overshoot OVERSHOOT gamma_crit at the rod speed v_ref (mm/s; a rod at
+    rest, v_ref = 0, takes 1 mm/s)."""
+    v = abs(float(v_ref))
+    return OVERSHOOT * gamma_crit / (v if v > 0.0 else 1.0)
 
 
 class SlipStateFriction(Term):
@@ -68,21 +76,20 @@ class SlipStateFriction(Term):
     (module docstring). Adds the friction to the u_z rows of the contact's chain and owns
     the z rows."""
 
-    def __init__(self, contact, velocity, zdofs, mu_s=0.1, gamma_crit=1e-4, n=4, eps=1e-3):
+    def __init__(self, contact, velocity, zdofs, mu_s=0.1, gamma_crit=1e-4, v_ref=1.0,
+                 blend=0.5):
         """``contact``: the :class:`sealts.contact.rigid.RodContact` (asperity pressure, rod
         side); ``velocity``: v(t), the rod's axial velocity (mm/s, +z); ``zdofs``: the dofs
         of z_i in chain order; ``mu_s`` (number or function of t); ``gamma_crit`` (mm);
-        ``n``: the Bouc-Wen exponent (the knee's sharpness); ``eps`` (mm/s): the slip rate
-        over which the loading switch is smoothed."""
-        if gamma_crit <= 0.0:
-            raise ValueError(f"gamma_crit must be positive, got {gamma_crit}")
-        if n < 1:
-            raise ValueError(f"the exponent n must be at least 1, got {n}")
+        ``v_ref`` (mm/s): the largest rod speed, which sets eta (:func:`relaxation_time`);
+        ``blend``: phi's stick-to-slide blend, as RodFriction."""
+        check_law(gamma_crit, blend)
         self.contact = contact
         self.side = sd = contact.side
         self.v = of_time(velocity)
         self.mu = of_time(mu_s)
-        self.gamma_crit, self.n, self.eps = float(gamma_crit), float(n), float(eps)
+        self.gamma_crit, self.blend = float(gamma_crit), float(blend)
+        self.eta = relaxation_time(gamma_crit, v_ref)
         self.zd = np.asarray(zdofs, np.int64)
         if self.zd.shape != (sd.m,):
             raise ValueError("zdofs must give one slip dof per chain node")
@@ -99,9 +106,9 @@ class SlipStateFriction(Term):
         return np.asarray(u[self.zd], float)
 
     def stress(self, t, u):
-        """Asperity shear stress on the seal (MPa, +z), mu_s p_s z / gamma_crit."""
+        """Asperity shear stress on the seal (MPa, +z), mu_s p_s phi(z / gamma_crit)."""
         p, _ = self.contact.pressure(t, u)
-        return self.mu(t) * p * u[self.zd] / self.gamma_crit
+        return self.mu(t) * p * saturation(u[self.zd] / self.gamma_crit, self.blend)[0]
 
     def forces(self, t, u):
         """Axial friction force on each chain node (N, +z on the seal)."""
@@ -116,10 +123,9 @@ class SlipStateFriction(Term):
         u[self.zd] = 0.0
 
     def rates(self, t, u, udot):
-        """(g, dg/dw, dg/dx) of every node at (u, u')."""
+        """(g, dg/dz) of every node at (u, u')."""
         w = self.v(t) - (0.0 if udot is None else udot[self.side.uz])
-        return bouc_wen_rate(w + np.zeros(self.side.m), u[self.zd] / self.gamma_crit,
-                             self.n, self.eps)
+        return return_rate(w + np.zeros(self.side.m), u[self.zd], self.gamma_crit, self.eta)
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
@@ -135,13 +141,13 @@ class SlipStateFriction(Term):
         p, dp = self.contact.pressure(t, u)
         sd = self.side
         L = sd.lengths(u)
-        x = u[self.zd] / self.gamma_crit
+        phi, dphi = saturation(u[self.zd] / self.gamma_crit, self.blend)
         k = self.mu(t) * sd.area
-        _, dg_dw, dg_dx = self.rates(t, u, udot)
+        _, dg_dz = self.rates(t, u, udot)
         a = shift
-        force = np.concatenate([-k * dp * L * x, -k * p * sd.half * x, k * p * sd.half * x,
-                                -k * p * L / self.gamma_crit])
-        vals = [force, a - dg_dx / self.gamma_crit, a * dg_dw]
+        force = np.concatenate([-k * dp * L * phi, -k * p * sd.half * phi,
+                                k * p * sd.half * phi, -k * p * L * dphi / self.gamma_crit])
+        vals = [force, a - dg_dz, np.full(sd.m, a)]
         if self.work is not None:
             vals.append(self.work[1](t) * force)                  # d(-v sum F)
         return np.concatenate(vals)

@@ -33,16 +33,19 @@ fluid shear and the rod friction, :class:`sealts.contact.friction_work.FrictionW
 one more, after them. The numbering (``model.partition.numbering``) places these scalars
 after the Section's fields.
 
-* solid friction (``stroke.friction``): :class:`sealts.contact.friction.RodFriction`, mu_s
-  p_s on the asperity contact with an elastic slip gamma_crit, and
-  :class:`sealts.contact.groove_friction.GrooveFriction`, ``groove.mu`` times the wall
-  pressure on the groove's bottom and side walls with the same gamma_crit (without it the
-  rod's friction rolls the O-ring in its frictionless groove); their anchors are updated
-  by their post-step hooks after every accepted step (TS stops at the rod's reversals).
-  With ``stroke.friction_history = "state"`` the rod friction is instead
+* solid friction (``stroke.friction``): on the rod mu_s p_s on the asperity contact with
+  an elastic slip gamma_crit, by default
   :class:`sealts.contact.slip_state_friction.SlipStateFriction`, its elastic slips the
-  ``rod_slip`` field, integrated by TS. ``friction_groove`` in the series is the walls'
-  axial friction force on the seal.
+  ``rod_slip`` field, integrated by TS with a viscoplastic return past gamma_crit
+  (``stroke.friction_history = "state"``), or with ``"anchors"``
+  :class:`sealts.contact.friction.RodFriction`, whose anchors its post-step hook moves
+  after every accepted step (the paper's return mapping, outside the error estimate); on
+  the groove's bottom and side walls :class:`sealts.contact.groove_friction.GrooveFriction`,
+  ``groove.mu`` times the wall pressure with the same gamma_crit (without it the rod's
+  friction rolls the O-ring in its frictionless groove), its anchors moved by its hook.
+  The series' ``groove_slide`` (and the summary's largest) is the slip that hook took off
+  a wall at each step: how far the walls' history moved outside the error estimate.
+  ``friction_groove`` in the series is the walls' axial friction force on the seal.
 
 * viscous stabilisation (``stroke.stabilisation``, c in MPa s/mm^2, 0 by default):
   :class:`sealts.solid.stabilisation.ViscousStabilisation`, F += c V_i u_i' on every
@@ -189,7 +192,7 @@ class StrokeProblem:
         if slip_state:
             self.friction = SlipStateFriction(self.rod, self.motion.v, lay.slip_dofs,
                                               mu_s=a.mu_s, gamma_crit=st.gamma_crit,
-                                              n=st.friction_exponent)
+                                              v_ref=self.motion.peak_speed())
         elif rod_friction:
             self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
                                         gamma_crit=st.gamma_crit)
@@ -428,7 +431,10 @@ class StrokeProblem:
                 # record
                 "wetted_edges": float(sum(self.load.reach)) if self.load is not None else 0.0,
                 # the groove walls' penalty penetration, p / k (mm)
-                "wall_penetration": float(self.groove.node_pressures(t, U).max()) / self.groove.k}
+                "wall_penetration": float(self.groove.node_pressures(t, U).max()) / self.groove.k,
+                # the slip the walls' return mapping took off a touched wall at this state
+                # (mm; 0 while the seal sticks to its walls)
+                "groove_slide": float(gf.slide) if gf is not None else 0.0}
         if self.groove.edge is not None:     # how far the seal is into the extrusion gap, mm
             out["extrusion"] = extrusion(self.groove, t, U)[0]
         return out
@@ -488,8 +494,15 @@ class StrokeProblem:
           relative part. The net leakage is the small difference of two transports of tens
           of mm^3: a tolerance of rtol |V| let every mid-stroke step err by 0.05 mm^3 and
           moved the net leakage by 2 % at rtol 1e-3 (benchmarks/stroke_sensitivity.md);
-        * the elastic slips of the rod friction state (mm): 1e-3 gamma_crit, a sticking
-          node's force to 1e-3;
+        * the elastic slips z of the rod friction (mm, ``friction_history = "state"``): rtol,
+          and atol = gamma_crit. A sticking node's slip moves with its axial displacement
+          (z' = v - u_z'), whose tolerance already holds it; a sliding node's force does not
+          depend on it (phi saturated). What the slip's own tolerance adds is a bound on
+          the path: no step may carry a node across its stick range unseen (a reversal
+          inside one step, which the anchors take as its net increment). Held to
+          1e-2 gamma_crit the slips' knees at the stick-slide transitions set the steps:
+          the default cycle took 1,167 + 71 stroke steps for 340 + 21, the answers within
+          0.01 % (benchmarks/stroke_sensitivity.md);
         * the Prony internal variables H_i (MPa, viscoelastic): rtol, and atol = rtol p_ref
           / g_i, so that each term's stress g_i H_i (Eq. (a) of
           :mod:`sealts.solid.viscoelastic`) is held to the film pressures' rtol p_ref. With
@@ -519,7 +532,7 @@ class StrokeProblem:
             at[self.layout.film_dofs] = opts.getReal(
                 "ts_pressure_atol", max(rtol * self.pressure_scale, atol))
         if self.layout.slip_dofs.size:
-            at[self.layout.slip_dofs] = 1e-3 * self.friction.gamma_crit
+            at[self.layout.slip_dofs] = self.friction.gamma_crit
         if self.prony is not None:
             g = self.prony.g
             at[self.prony_dofs()] = (rtol * self.pressure_scale / g)[None, None, :, None]

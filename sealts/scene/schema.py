@@ -243,13 +243,11 @@ class Stroke:
     gamma_crit: float = option(1e-4, unit="mm", gt=0.0,
                                doc="elastic slip at which solid friction reaches mu_s p_s")
     friction_history: str = option(
-        "anchors", choices=("anchors", "state"),
-        doc="the rod friction's elastic slip: anchors, moved after each accepted step (the "
-            "paper's return mapping); state, TS unknowns with the Bouc-Wen rate law, under "
-            "TS error control (sealts/contact/slip_state_friction.py)")
-    friction_exponent: float = option(4.0, ge=2.0,
-                                      doc="friction_history = state: the Bouc-Wen exponent n "
-                                          "(the knee between stick and slide sharpens with n)")
+        "state", choices=("state", "anchors"),
+        doc="the rod friction's elastic slip: state, TS unknowns with a viscoplastic "
+            "return past gamma_crit, under TS error control "
+            "(sealts/contact/slip_state_friction.py); anchors, moved after each accepted "
+            "step (the paper's return mapping, outside the error estimate)")
     stabilisation: float = option(0.0, unit="MPa s/mm^2", ge=0.0,
                                   doc="viscous force c V_i u_i' on the seal's nodes (0: none): "
                                       "gives a snap of the quasi-static seal (a fold of its "
@@ -507,18 +505,9 @@ def _check_asperity(s):
                          "it from)")
 
 
-def _check_friction_history(s):
-    """The Bouc-Wen exponent belongs to the slip-state history (ignored otherwise)."""
-    st = s.stroke
-    if st.friction_history != "state" and st.friction_exponent != Stroke().friction_exponent:
-        raise SceneError("stroke.friction_exponent is only used with stroke.friction_history "
-                         f"= 'state' (friction_history is {st.friction_history!r})")
-
-
 def _check_consistency(s, base):
     """Cross-key checks: things each key allows alone but not together."""
     _check_asperity(s)
-    _check_friction_history(s)
     _check_sizes(s)
     if s.model == "seal":
         _check_seal_geometry(s, base)

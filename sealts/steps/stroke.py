@@ -209,6 +209,10 @@ class Stroke(Step):
             "front_moves": int(stroke.front.moves.sum()) if stroke.front is not None else 0,
             "wall_penetration": float(max(r["wall_penetration"] for r in rows)),
             "front_drift": float(max(r["front_drift"] for r in rows)),
+            # the largest slip the groove walls' return mapping took off a wall at one
+            # accepted step (mm): how far the walls' friction history moved outside the TS
+            # error estimate (0: the seal stuck to its walls)
+            "groove_slide": float(max(r.get("groove_slide", 0.0) for r in rows)),
             # the film gap's largest node-to-node mode over the contact (sealts.film.odd_even)
             "odd_even": float(np.nanmax([r.get("odd_even", np.nan) for r in rows] + [0.0])),
             # V_in - V_out against the change of the film's content (StrokeProblem.scalars'
