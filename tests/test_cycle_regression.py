@@ -32,13 +32,14 @@ and with the pressure-penetration front moving during the stroke (``stroke.front
     0.025  / 0.2     1e-3    2,822     683   15.96   84.78  -68.82   67.43 / 62.96
     0.025  / 0.2     1e-4    2,822   1,563   15.96   84.78  -68.82   67.43 / 62.96
 
-and with the rod friction's elastic slips as TS unknowns (``stroke.friction_history =
-"state"``, the default since; the rows above moved its anchors after each step), 2,991
-unknowns (the 2,822 and a slip per rod-side node), 2026-12-04:
+and with the friction's history as TS unknowns (``stroke.friction_history = "state"``,
+the default since: the rod's elastic slips and the groove walls' anchors; the rows above
+moved their anchors after each step), 3,487 unknowns (the 2,822, a slip per rod-side node
+and two anchors per boundary node), 2026-12-04:
 
-    0.025  / 0.2     1e-2    2,991     342   15.96   84.79  -68.83   67.42 / 62.94  <- this
-    0.025  / 0.2     1e-3    2,991     705   15.96   84.78  -68.82   67.43 / 62.96
-    0.025  / 0.2     1e-4    2,991   1,587   15.96   84.78  -68.82   67.43 / 62.96
+    0.025  / 0.2     1e-2    3,487     348   15.97   84.79  -68.82   67.43 / 62.94  <- this
+    0.025  / 0.2     1e-3    3,487     746   15.96   84.78  -68.82   67.43 / 62.96
+    0.025  / 0.2     1e-4    3,487   1,646   15.96   84.78  -68.82   67.43 / 62.96
 
 With the film pressures held to 1e-6 MPa (2026-12-02) the 0.025 / 0.2 cycle took 1,549
 steps at rtol 1e-3 and 3,444 at 1e-4 to the same numbers.
@@ -95,7 +96,7 @@ def cycle(tmp_path_factory):
 
 def test_cycle_leakage_and_peak_friction(cycle):
     st = cycle[0]["stroke"]
-    assert st["unknowns"] == 2991           # the 0.025 / 0.2 mesh of the study: W, the slips
+    assert st["unknowns"] == 3487           # the 0.025 / 0.2 mesh of the study, W, slips, anchors
     assert st["leakage_out"] == pytest.approx(15.96, rel=1e-2)
     assert st["outstroke_transport"] == pytest.approx(84.77, rel=3e-3)
     assert st["instroke_transport"] == pytest.approx(-68.81, rel=3e-3)

@@ -304,3 +304,57 @@ def test_node_dragged_along_the_bottom_and_round_the_corner():
     x = start[0] + u
     assert x[1] < 0.02 and x[0] < 0.78
     assert fric.total(0.0, u)["wall_pressure_side"][0] > 0
+
+
+@pytest.mark.parametrize("rho", [0.0, 0.2])
+def test_groove_state_jacobian(rho):
+    """The anchors as TS unknowns (GrooveStateFriction): every entry of the four 2x2 nodal
+    blocks (force by displacement and anchor, anchor rate by anchor and displacement, with
+    the TS shift) against central differences in U and U' (entries above 1e-3 of the
+    largest to 1e-6 relative, the rest to 1e-6 of the largest), with slips in stick, the
+    blend and flowing of both signs, on flat walls, sharp corners and corner arcs; and
+    the anchors' rate is minus the excess over gamma_crit along the tangent, divided by
+    eta (a flat wall alone)."""
+    from sealts.contact.groove_slip_state import GrooveStateFriction
+    X, groove, u = block(rho)
+    m = X.shape[0]
+    n = u.size + 2 * m
+    ad = u.size + np.arange(2 * m).reshape(m, 2)
+    t = 0.7
+    fric = GrooveStateFriction(groove, ad, mu=lambda t: 0.1 + 0.2 * t, v_ref=50.0)
+    ref = GrooveFriction(groove, mu=lambda t: 0.1 + 0.2 * t)
+    choices = np.array([-3.0, -0.7, -0.2, 0.1, 0.4, 0.6, 0.8, 2.0, 0.0, 0.3, -0.6, 1.3,
+                        -1.7])
+    rng = np.random.default_rng(1)
+    x, y = rng.choice(choices, m), rng.choice(choices, m)
+    region = set_slips(ref, t, u, x, y)
+    U = np.concatenate([u, ref.anchors.ravel()])
+    Ud = rng.uniform(-1.0, 1.0, n)
+    problem = Problem(n, [fric])
+    shift = 3.0
+    J = problem.jacobian_dense(t, U, Ud, shift)
+    eps = 1e-8
+    fd = np.zeros((n, n))
+    for j in range(n):
+        e = np.zeros(n)
+        e[j] = eps
+        fd[:, j] = ((problem.residual(t, U + e, Ud) - problem.residual(t, U - e, Ud))
+                    / (2 * eps)
+                    + shift * (problem.residual(t, U, Ud + e) - problem.residual(t, U, Ud - e))
+                    / (2 * eps))
+    scale = np.abs(J).max()
+    assert np.abs(J - fd).max() <= 1e-6 * scale
+    big = np.abs(J) > 1e-3 * scale
+    rel = np.abs(J[big] - fd[big]) / np.abs(J[big])
+    assert rel.max() < 1e-6, rel.max()
+    # the forces are GrooveFriction's at the same anchors
+    assert np.array_equal(fric.forces(t, U), ref.forces(t, u))
+    # on the flat bottom (tangent e_z; the side walls' tangents are e_r) the anchor's z
+    # rate is -psi(gamma_0) / eta: the residual a' + sum psi t / eta at a' = 0
+    f = np.zeros(n)
+    fric.add_residual(t, U, np.zeros(n), f)
+    g = ref.slip(t, u)
+    alone = (region == 0) & (np.abs(g[0]) > GC)
+    psi = np.sign(g[0]) * (np.abs(g[0]) - GC)
+    assert alone.sum() > 3
+    assert np.allclose(f[ad[alone, 1]], psi[alone] / fric.eta, rtol=1e-9, atol=0)

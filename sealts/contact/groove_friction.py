@@ -52,7 +52,9 @@ bottom (or an arc) alone, a side wall alone, the bottom and one side wall in a s
 the opposite side wall neither, since rho < width / 2.) Slots not touched get zero slip, so a
 node that lands on a wall starts from zero elastic slip. Where |gamma| > gamma_crit phi is
 saturated, so the update leaves the forces unchanged. The costs and limits are those of
-RodFriction (path-independent within a step, anchors outside the TS error estimate).
+RodFriction (path-independent within a step, anchors outside the TS error estimate): this
+is the history of ``stroke.friction_history = "anchors"``; by default the anchors are TS
+unknowns (:mod:`.groove_slip_state`).
 """
 import numpy as np
 
@@ -151,9 +153,13 @@ class GrooveFriction(Term):
         u = np.asarray(u, float)
         return np.stack([u[self.groove.ur], u[self.groove.uz]], axis=1)
 
+    def _anchors(self, u):
+        """The anchors a_i (n, 2), mm: this term's history (a subclass may keep them in u)."""
+        return self.anchors
+
     def _evaluate(self, t, u):
         p, dp, tan, dtan, region = groove_surfaces(self.groove, t, u)
-        rel = self._disp(u) - self.anchors                       # u - a, (n, 2)
+        rel = self._disp(u) - self._anchors(u)                   # u - a, (n, 2)
         gamma = -np.einsum("kni,ni->kn", tan, rel)
         phi, dphi = saturation(gamma / self.gamma_crit, self.blend)
         return p, dp, tan, dtan, region, rel, gamma, phi, dphi
@@ -225,12 +231,16 @@ class GrooveFriction(Term):
         np.subtract.at(f, self.groove.ur, F[:, 0])
         np.subtract.at(f, self.groove.uz, F[:, 1])
 
-    def jacobian_values(self, t, u, udot, shift):
-        p, dp, tan, dtan, _, rel, _, phi, dphi = self._evaluate(t, u)
-        c = self.mu(t) * self.groove.w                                   # (n,)
+    def force_jacobian(self, p, dp, tan, dtan, rel, phi, dphi, c):
+        """d(-F)/du per node (n, 2, 2) from the surfaces and slips of ``_evaluate``; c =
+        mu_g w (n,)."""
         dgamma = -tan - np.einsum("knij,ni->knj", dtan, rel)             # (3, n, 2)
         K = (np.einsum("kni,knj->knij", tan, phi[..., None] * dp
                        + (p * dphi / self.gamma_crit)[..., None] * dgamma)
              + (p * phi)[..., None, None] * dtan)                        # dF/dx (3, n, 2, 2)
-        K = -c[:, None, None] * K.sum(axis=0)                            # residual: -F
+        return -c[:, None, None] * K.sum(axis=0)                         # residual: -F
+
+    def jacobian_values(self, t, u, udot, shift):
+        p, dp, tan, dtan, _, rel, _, phi, dphi = self._evaluate(t, u)
+        K = self.force_jacobian(p, dp, tan, dtan, rel, phi, dphi, self.mu(t) * self.groove.w)
         return np.concatenate([K[:, 0, 0], K[:, 0, 1], K[:, 1, 0], K[:, 1, 1]])

@@ -11,6 +11,8 @@ field               points                     components
 ``displacement``    every vertex               2: u_r, u_z (mm)
 ``film_pressure``   ``rod_side`` vertices      1: p (MPa), when the scene has a film
 ``rod_slip``        ``rod_side`` vertices      1: z (mm), the rod friction's elastic slip
+``groove_anchor``   boundary vertices          2: a_r, a_z (mm), the groove walls' friction
+                                               anchors
 ``prony``           every cell                 ``prony``: internal variables (issue 4)
 ==================  =========================  ==========================================
 
@@ -53,7 +55,7 @@ def label_boundaries(dm, mesh, v0):
 class Layout:
     """DMPlex + Section of a seal mesh with the fields a scene needs."""
 
-    def __init__(self, mesh, film=False, prony=0, slip=False):
+    def __init__(self, mesh, film=False, prony=0, slip=False, groove=False):
         X = np.ascontiguousarray(mesh.X, float)
         conn = np.ascontiguousarray(mesh.conn, PETSc.IntType)
         n_cells, n_nodes = conn.shape[0], X.shape[0]
@@ -71,10 +73,14 @@ class Layout:
             fields.append(("film_pressure", 1))
         if slip:
             fields.append(("rod_slip", 1))
+        if groove:
+            fields.append(("groove_anchor", 2))
         if prony:
             fields.append(("prony", int(prony)))
         self.fields = [f for f, _ in fields]
         rod = mesh.chain("rod_side") if (film or slip) else np.zeros(0, np.int64)
+        # every boundary vertex may touch a groove wall (GrooveContact's nodes)
+        bnd = mesh.boundary_nodes() if groove else np.zeros(0, np.int64)
         sec = PETSc.Section().create(comm=PETSc.COMM_SELF)
         sec.setNumFields(len(fields))
         for i, (name, k) in enumerate(fields):
@@ -92,6 +98,11 @@ class Layout:
                 for node in rod:
                     sec.setFieldDof(v0 + int(node), f, 1)
                 ndof[v0 + rod - p0] += 1
+        if groove:
+            f = self.fields.index("groove_anchor")
+            for node in bnd:
+                sec.setFieldDof(v0 + int(node), f, 2)
+            ndof[v0 + bnd - p0] += 2
         if prony:
             for c in range(c0, c1):
                 sec.setFieldDof(c, len(fields) - 1, int(prony))
@@ -111,6 +122,11 @@ class Layout:
         self.udofs = np.array([[sec.getFieldOffset(v, 0)] * 2 for v in range(v0, v1)],
                               np.int64) + [0, 1]
         self.rod_nodes = rod
+        self.groove_nodes = bnd
+        self.groove_dofs = (np.array([sec.getFieldOffset(v0 + int(i),
+                                                         self.fields.index("groove_anchor"))
+                                      for i in bnd], np.int64)[:, None] + np.arange(2)
+                            if groove else np.zeros((0, 2), np.int64))
         self.film_dofs, self.slip_dofs = (
             np.array([sec.getFieldOffset(v0 + int(i), self.fields.index(name)) for i in rod]
                      if name in self.fields else [], np.int64)
@@ -123,7 +139,8 @@ class Layout:
     def field_dofs(self, name):
         """All dofs of one field, sorted."""
         arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,
-                  "rod_slip": self.slip_dofs, "prony": self.prony_dofs}
+                  "rod_slip": self.slip_dofs, "groove_anchor": self.groove_dofs,
+                  "prony": self.prony_dofs}
         if name not in self.fields:
             raise KeyError(f"no field {name!r} in this layout (fields: {self.fields})")
         return np.sort(arrays[name].ravel())

@@ -109,11 +109,12 @@ class Partition:
                                f"and owns {owned} of {nv} vertices")
         self._mpi = mpi
 
-    def numbering(self, prony=0, film=False, scalars=(), slip=False):
+    def numbering(self, prony=0, film=False, scalars=(), slip=False, groove=False):
         """The dofs of a layout with displacements, a film pressure (``film``) and the rod
-        friction's elastic slip (``slip``) on the ``rod_side`` vertices, ``prony`` dofs per
-        cell and named global ``scalars``: a :class:`Numbering`."""
-        return Numbering(self, int(prony), film, scalars, slip)
+        friction's elastic slip (``slip``) on the ``rod_side`` vertices, the groove walls'
+        friction anchors (``groove``) on the boundary vertices, ``prony`` dofs per cell and
+        named global ``scalars``: a :class:`Numbering`."""
+        return Numbering(self, int(prony), film, scalars, slip, groove)
 
 
 def node_dof_ranges(start, count, nodes):
@@ -132,7 +133,8 @@ class Numbering:
     Serial (natural): the DMPlex Section of :class:`~sealts.mesh.layout.Layout` (fields on
     labelled points, vertices first in node order, then cells), then the global scalars in
     the order named: ``udofs`` (node -> 2 dofs), ``film_dofs`` and ``slip_dofs`` (chain
-    node -> 1 dof each, with ``rod_nodes`` the chain), ``prony_dofs`` (cell -> k dofs),
+    node -> 1 dof each, with ``rod_nodes`` the chain), ``groove_dofs`` (groove node -> 2
+    dofs, with ``groove_nodes`` the boundary vertices), ``prony_dofs`` (cell -> k dofs),
     ``scalar_dofs`` (name -> dof), ``field_dofs(name)``, ``n``. Global: ``natural`` (serial -> global); this rank
     owns globals [rstart, rstart + n_owned): its owned vertices' dofs (node order, every
     field of a vertex together), its cells' dofs and, on rank 0, the scalars. Local (this
@@ -147,12 +149,13 @@ class Numbering:
 
     distributed = True
 
-    def __init__(self, part, k, film=False, scalars=(), slip=False):
+    def __init__(self, part, k, film=False, scalars=(), slip=False, groove=False):
         nv = part.n_nodes
         self.partition, self.k = part, k
-        lay = Layout(part.mesh, film=film, prony=k, slip=slip)
+        lay = Layout(part.mesh, film=film, prony=k, slip=slip, groove=groove)
         self.udofs, self.film_dofs, self.rod_nodes = lay.udofs, lay.film_dofs, lay.rod_nodes
         self.slip_dofs = lay.slip_dofs
+        self.groove_nodes, self.groove_dofs = lay.groove_nodes, lay.groove_dofs
         self.prony_dofs = lay.prony_dofs
         self.fields = list(lay.fields)
         self.scalars = tuple(scalars)
@@ -162,6 +165,7 @@ class Numbering:
         self.n = lay.n + len(self.scalars)
         count = np.full(nv, 2, np.int64)
         count[lay.rod_nodes] += int(film) + int(slip)
+        count[lay.groove_nodes] += 2
         start = self.udofs[:, 0]
         scal = (np.arange(lay.n, self.n, dtype=np.int64) if part.rank == 0
                 else np.zeros(0, np.int64))
@@ -203,6 +207,11 @@ class Numbering:
             hit = np.argwhere(np.asarray(arr) == dof)
             if hit.size:
                 return f"{name} at rod-side node {int(self.rod_nodes[hit[0][0]])}"
+        hit = np.argwhere(self.groove_dofs == dof)
+        if hit.size:
+            node, c = hit[0]
+            return (f"{('radial', 'axial')[c]} groove friction anchor of node "
+                    f"{int(self.groove_nodes[node])}")
         hit = np.argwhere(self.prony_dofs == dof)
         if hit.size:
             return f"Prony variable of cell {hit[0][0]}"
@@ -211,7 +220,8 @@ class Numbering:
     def field_dofs(self, name):
         """All serial dofs of one field, sorted."""
         arrays = {"displacement": self.udofs, "film_pressure": self.film_dofs,
-                  "rod_slip": self.slip_dofs, "prony": self.prony_dofs}
+                  "rod_slip": self.slip_dofs, "groove_anchor": self.groove_dofs,
+                  "prony": self.prony_dofs}
         if name not in self.fields:
             raise KeyError(f"no field {name!r} in this layout (fields: {self.fields})")
         return np.sort(arrays[name].ravel())

@@ -33,18 +33,17 @@ fluid shear and the rod friction, :class:`sealts.contact.friction_work.FrictionW
 one more, after them. The numbering (``model.partition.numbering``) places these scalars
 after the Section's fields.
 
-* solid friction (``stroke.friction``): on the rod mu_s p_s on the asperity contact with
-  an elastic slip gamma_crit, by default
-  :class:`sealts.contact.slip_state_friction.SlipStateFriction`, its elastic slips the
-  ``rod_slip`` field, integrated by TS with a viscoplastic return past gamma_crit
-  (``stroke.friction_history = "state"``), or with ``"anchors"``
-  :class:`sealts.contact.friction.RodFriction`, whose anchors its post-step hook moves
-  after every accepted step (the paper's return mapping, outside the error estimate); on
-  the groove's bottom and side walls :class:`sealts.contact.groove_friction.GrooveFriction`,
-  ``groove.mu`` times the wall pressure with the same gamma_crit (without it the rod's
-  friction rolls the O-ring in its frictionless groove), its anchors moved by its hook.
-  The series' ``groove_slide`` (and the summary's largest) is the slip that hook took off
-  a wall at each step: how far the walls' history moved outside the error estimate.
+* solid friction (``stroke.friction``): mu_s p_s on the rod's asperity contact and
+  ``groove.mu`` times the wall pressure on the groove's bottom, side walls and corner arcs
+  (without it the rod's friction rolls the O-ring in its frictionless groove), both the
+  paper's elastic slip with gamma_crit. Their history is, by default (``stroke.
+  friction_history = "state"``), TS state with a viscoplastic return past gamma_crit:
+  :class:`sealts.contact.slip_state_friction.SlipStateFriction` (the ``rod_slip`` field)
+  and :class:`sealts.contact.groove_slip_state.GrooveStateFriction` (the
+  ``groove_anchor`` field); with ``"anchors"`` :class:`sealts.contact.friction.RodFriction`
+  and :class:`sealts.contact.groove_friction.GrooveFriction`, whose post-step hooks move
+  their anchors after every accepted step (the paper's return mapping, outside the error
+  estimate; the series' ``groove_slide`` is the slip the walls' hook took off a wall).
   ``friction_groove`` in the series is the walls' axial friction force on the seal.
 
 * viscous stabilisation (``stroke.stabilisation``, c in MPa s/mm^2, 0 by default):
@@ -88,6 +87,7 @@ from ..contact.extrusion_guard import extrusion
 from ..contact.friction import RodFriction
 from ..contact.friction_work import FrictionWork
 from ..contact.groove_friction import GrooveFriction
+from ..contact.groove_slip_state import GrooveStateFriction
 from ..contact.rigid import GrooveContact, RodContact, node_contact_pressure, tributary_lengths
 from ..contact.rod_motion import motion_from_scene
 from ..contact.slip_state_friction import SlipStateFriction
@@ -143,10 +143,13 @@ class StrokeProblem:
         st = scene.stroke
         rod_friction = st.friction and scene.asperity.mu_s > 0.0
         slip_state = rod_friction and st.friction_history == "state"
+        wall_friction = st.friction and scene.groove.mu > 0.0
+        wall_state = wall_friction and st.friction_history == "state"
         if wet or rod_friction:
             scalars += ("W",)                    # the friction work, last
         self.layout = lay = model.partition.numbering(prony=prony_size, film=wet,
-                                                      scalars=scalars, slip=slip_state)
+                                                      scalars=scalars, slip=slip_state,
+                                                      groove=wall_state)
         self.n = lay.n
         ud = lay.udofs
         axisym = model.axisym
@@ -196,9 +199,16 @@ class StrokeProblem:
         elif rod_friction:
             self.friction = RodFriction(self.rod, self.motion.s, mu_s=a.mu_s,
                                         gamma_crit=st.gamma_crit)
-        if scene.stroke.friction and scene.groove.mu > 0.0:
+        if wall_state:
+            if not np.array_equal(lay.groove_nodes, self.groove.nodes):
+                raise RuntimeError("the groove anchors' nodes are not the groove contact's")
+            self.groove_friction = GrooveStateFriction(self.groove, lay.groove_dofs,
+                                                       mu=scene.groove.mu,
+                                                       gamma_crit=st.gamma_crit,
+                                                       v_ref=self.motion.peak_speed())
+        elif wall_friction:
             self.groove_friction = GrooveFriction(self.groove, mu=scene.groove.mu,
-                                                  gamma_crit=scene.stroke.gamma_crit)
+                                                  gamma_crit=st.gamma_crit)
         # the friction work (fluid shear and rod friction) as a TS unknown
         sources = [f for f in (self.film, self.friction) if f is not None]
         self.work = (FrictionWork(lay.scalar_dofs["W"], self.motion.v, sources)
@@ -304,8 +314,8 @@ class StrokeProblem:
             fr.reset(0.0, U)                       # no elastic slip in the pressurised state
         # the long-term equilibrium with the film (the paper's step 2 ends with the
         # hydrostatic film); a viscoelastic seal starts relaxed from it
-        # the integrals (V, W) and the slips z (zero, from the reset) held
-        fixed = np.concatenate([self.vdofs, lay.slip_dofs]
+        # the integrals (V, W), the slips z and the walls' anchors (zero slip, from the reset) held
+        fixed = np.concatenate([self.vdofs, lay.slip_dofs, lay.groove_dofs.ravel()]
                                + ([[self.work.wd]] if self.work is not None else []))
         solid = self.solid
         if self.prony is not None:
@@ -503,6 +513,11 @@ class StrokeProblem:
           1e-2 gamma_crit the slips' knees at the stick-slide transitions set the steps:
           the default cycle took 1,167 + 71 stroke steps for 340 + 21, the answers within
           0.01 % (benchmarks/stroke_sensitivity.md);
+        * the groove walls' friction anchors (mm, ``friction_history = "state"``): rtol, and
+          atol = gamma_crit, as the rod's slips: a sticking node's anchor stands still, a
+          sliding one's follows its node where the force is saturated. Held to their
+          nodes' displacement atol (rtol h_c) the default cycle took 382 + 23 stroke steps
+          for 348 + 19, to the same answer within 0.03 %; with no relative part 571 + 20;
         * the Prony internal variables H_i (MPa, viscoelastic): rtol, and atol = rtol p_ref
           / g_i, so that each term's stress g_i H_i (Eq. (a) of
           :mod:`sealts.solid.viscoelastic`) is held to the film pressures' rtol p_ref. With
@@ -533,6 +548,8 @@ class StrokeProblem:
                 "ts_pressure_atol", max(rtol * self.pressure_scale, atol))
         if self.layout.slip_dofs.size:
             at[self.layout.slip_dofs] = self.friction.gamma_crit
+        if self.layout.groove_dofs.size:
+            at[self.layout.groove_dofs.ravel()] = self.groove_friction.gamma_crit
         if self.prony is not None:
             g = self.prony.g
             at[self.prony_dofs()] = (rtol * self.pressure_scale / g)[None, None, :, None]

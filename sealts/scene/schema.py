@@ -244,10 +244,12 @@ class Stroke:
                                doc="elastic slip at which solid friction reaches mu_s p_s")
     friction_history: str = option(
         "state", choices=("state", "anchors"),
-        doc="the rod friction's elastic slip: state, TS unknowns with a viscoplastic "
+        doc="the solid friction's history on the rod and the groove walls: state, the "
+            "rod's elastic slips and the walls' anchors as TS unknowns with a viscoplastic "
             "return past gamma_crit, under TS error control "
-            "(sealts/contact/slip_state_friction.py); anchors, moved after each accepted "
-            "step (the paper's return mapping, outside the error estimate)")
+            "(sealts/contact/slip_state_friction.py, groove_slip_state.py); anchors, moved "
+            "after each accepted step (the paper's return mapping, outside the error "
+            "estimate)")
     stabilisation: float = option(0.0, unit="MPa s/mm^2", ge=0.0,
                                   doc="viscous force c V_i u_i' on the seal's nodes (0: none): "
                                       "gives a snap of the quasi-static seal (a fold of its "

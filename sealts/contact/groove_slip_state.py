@@ -1,0 +1,105 @@
+"""Friction on the groove walls with its anchors as TS unknowns: the walls' history under
+TS error control, with the rod's viscoplastic return (:mod:`.slip_state_friction`).
+
+:class:`.groove_friction.GrooveFriction` gives each groove node an anchor a_i (an (r, z)
+pair) and the force of slot k (the bottom or a corner arc, the side walls)
+
+    F_k,i = mu_g p_k(x_i) w_i phi(gamma_k,i / gamma_crit) t_k(x_i),
+    gamma_k,i = -t_k(x_i) . (u_i - a_i),
+
+and moves the anchors after each accepted step so that no touched slot's |gamma| exceeds
+gamma_crit. Here the anchors are the ``groove_anchor`` field (two unknowns per groove
+node), and every slot's excess over gamma_crit flows off with the rod's relaxation time
+eta (:func:`.slip_state_friction.relaxation_time`):
+
+    da_i/dt = -sum_k psi(gamma_k,i) t_k(x_i) / eta,
+    psi(gamma) = sgn(gamma) max(|gamma| - gamma_crit, 0)                   (mm/s).
+
+Since d gamma_k / d a = t_k, each slot's slip then obeys d gamma_k/dt = (its rate from
+the node's motion) - psi(gamma_k) / eta where the slots' tangents are orthogonal (a flat
+wall alone, a sharp corner's bottom and side wall); in general the anchor follows the
+gradient flow of sum_k Psi(gamma_k) (Psi' = psi, convex), which ends with every slot
+within gamma_crit. A node that sticks keeps its anchor (psi = 0); one that slides carries
+it along at gamma_crit plus the overshoot |rate| eta, where phi is saturated and its force
+exactly the Coulomb limit. Unlike the return mapping, slots that are not touched are not
+reset to zero slip: their anchors trail the node within gamma_crit, so a node that lands
+on a wall starts with at most the Coulomb force (whose pressure starts at zero).
+
+Exact Jacobian, with the TS shift a = dU'/dU, per node (2x2 blocks; the force block dF/du
+is GrooveFriction's, and the residual carries -F):
+
+    d(-F)/da  = -mu_g w sum_k p_k phi_k' / gamma_crit t_k t_k^T,
+    dR_a/da   = a I + sum_k psi_k' t_k t_k^T / eta,
+    dR_a/du   = sum_k (psi_k' t_k (d gamma_k/dx)^T + psi_k dt_k/dx) / eta,
+    d gamma_k/dx = -t_k - (dt_k/dx)^T (u - a).
+"""
+import numpy as np
+
+from .groove_friction import GrooveFriction
+from .slip_state_friction import relaxation_time
+
+
+def excess(gamma, gamma_crit):
+    """psi(gamma) and psi'(gamma) (module docstring)."""
+    over = np.abs(gamma) - gamma_crit
+    flowing = over > 0.0
+    return np.where(flowing, np.sign(gamma) * over, 0.0), flowing.astype(float)
+
+
+class GrooveStateFriction(GrooveFriction):
+    """GrooveFriction whose anchors are TS unknowns ``adofs`` ((n, 2): the (r, z) anchor of
+    each groove node), integrated with the return of the module docstring."""
+
+    history_names = ()
+
+    def __init__(self, groove, adofs, mu=0.1, gamma_crit=1e-4, v_ref=1.0, blend=0.5):
+        """``groove``, ``mu``, ``gamma_crit``, ``blend``: as GrooveFriction; ``adofs``: the
+        anchors' dofs per groove node; ``v_ref`` (mm/s): the rod's largest speed, which sets
+        eta as for the rod's slips."""
+        super().__init__(groove, mu=mu, gamma_crit=gamma_crit, blend=blend)
+        self.ad = np.asarray(adofs, np.int64)
+        if self.ad.shape != (groove.nodes.size, 2):
+            raise ValueError("adofs must give an (r, z) anchor dof pair per groove node")
+        self.eta = relaxation_time(gamma_crit, v_ref)
+        ur, uz = groove.ur, groove.uz
+        ar, az = self.ad[:, 0], self.ad[:, 1]
+        # the blocks (u, u) as GrooveFriction, then (u, a), (a, a) and (a, u), each row-major
+        self.rows = np.concatenate([ur, ur, uz, uz, ur, ur, uz, uz,
+                                    ar, ar, az, az, ar, ar, az, az]).astype(np.int64)
+        self.cols = np.concatenate([ur, uz, ur, uz, ar, az, ar, az,
+                                    ar, az, ar, az, ur, uz, ur, uz]).astype(np.int64)
+
+    def _anchors(self, u):
+        return np.asarray(u, float)[self.ad]
+
+    def reset(self, t, u):
+        """Zero elastic slip on every wall: sets the anchors in u to the nodes'
+        displacements (in place)."""
+        u[self.ad] = self._disp(u)
+
+    def accepted(self, t, u):
+        """No hook: TS integrates the anchors."""
+
+    # ---- Term interface --------------------------------------------------------------------
+    def add_residual(self, t, u, udot, f):
+        super().add_residual(t, u, udot, f)
+        _, _, tan, _, _, _, gamma, _, _ = self._evaluate(t, u)
+        psi, _ = excess(gamma, self.gamma_crit)
+        rate = np.einsum("kn,kni->ni", psi, tan) / self.eta
+        adot = 0.0 if udot is None else udot[self.ad]
+        np.add.at(f, self.ad, adot + rate)
+
+    def jacobian_values(self, t, u, udot, shift):
+        p, dp, tan, dtan, _, rel, gamma, phi, dphi = self._evaluate(t, u)
+        c = self.mu(t) * self.groove.w
+        tt = np.einsum("kni,knj->knij", tan, tan)                          # (3, n, 2, 2)
+        K_uu = self.force_jacobian(p, dp, tan, dtan, rel, phi, dphi, c)
+        K_ua = -c[:, None, None] * np.einsum("kn,knij->nij",
+                                             p * dphi / self.gamma_crit, tt)
+        psi, dpsi = excess(gamma, self.gamma_crit)
+        K_aa = (shift * np.eye(2)[None] + np.einsum("kn,knij->nij", dpsi, tt) / self.eta)
+        dgamma = -tan - np.einsum("knij,ni->knj", dtan, rel)
+        K_au = (np.einsum("kn,kni,knj->nij", dpsi, tan, dgamma)
+                + np.einsum("kn,knij->nij", psi, dtan)) / self.eta
+        return np.concatenate([np.concatenate([K[:, 0, 0], K[:, 0, 1], K[:, 1, 0], K[:, 1, 1]])
+                               for K in (K_uu, K_ua, K_aa, K_au)])
