@@ -171,6 +171,10 @@ class GrooveFriction(Term):
     def slot_forces(self, t, u):
         """F_k,i (3, n, 2): the friction force of each slot on each node (N, (r, z))."""
         p, _, tan, _, _, _, _, phi, _ = self._evaluate(t, u)
+        return self.slot_forces_of(t, p, tan, phi)
+
+    def slot_forces_of(self, t, p, tan, phi):
+        """F_k,i from the surfaces and slips of ``_evaluate``."""
         return (self.mu(t) * p * self.groove.w * phi)[..., None] * tan
 
     def forces(self, t, u):
@@ -227,14 +231,21 @@ class GrooveFriction(Term):
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
-        F = self.forces(t, u)
+        self.subtract_forces(self.forces(t, u), f)
+
+    def subtract_forces(self, F, f):
+        """The residual carries -F (F per node, (n, 2))."""
         np.subtract.at(f, self.groove.ur, F[:, 0])
         np.subtract.at(f, self.groove.uz, F[:, 1])
 
-    def force_jacobian(self, p, dp, tan, dtan, rel, phi, dphi, c):
-        """d(-F)/du per node (n, 2, 2) from the surfaces and slips of ``_evaluate``; c =
-        mu_g w (n,)."""
-        dgamma = -tan - np.einsum("knij,ni->knj", dtan, rel)             # (3, n, 2)
+    @staticmethod
+    def slip_gradient(tan, dtan, rel):
+        """d gamma_k / dx (3, n, 2) = -t_k - (dt_k/dx)^T (u - a)."""
+        return -tan - np.einsum("knij,ni->knj", dtan, rel)
+
+    def force_jacobian(self, p, dp, tan, dtan, dgamma, phi, dphi, c):
+        """d(-F)/du per node (n, 2, 2) from the surfaces and slips of ``_evaluate`` and
+        ``slip_gradient``; c = mu_g w (n,)."""
         K = (np.einsum("kni,knj->knij", tan, phi[..., None] * dp
                        + (p * dphi / self.gamma_crit)[..., None] * dgamma)
              + (p * phi)[..., None, None] * dtan)                        # dF/dx (3, n, 2, 2)
@@ -242,5 +253,6 @@ class GrooveFriction(Term):
 
     def jacobian_values(self, t, u, udot, shift):
         p, dp, tan, dtan, _, rel, _, phi, dphi = self._evaluate(t, u)
-        K = self.force_jacobian(p, dp, tan, dtan, rel, phi, dphi, self.mu(t) * self.groove.w)
+        K = self.force_jacobian(p, dp, tan, dtan, self.slip_gradient(tan, dtan, rel), phi,
+                                dphi, self.mu(t) * self.groove.w)
         return np.concatenate([K[:, 0, 0], K[:, 0, 1], K[:, 1, 0], K[:, 1, 1]])

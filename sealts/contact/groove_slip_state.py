@@ -36,14 +36,7 @@ is GrooveFriction's, and the residual carries -F):
 import numpy as np
 
 from .groove_friction import GrooveFriction
-from .slip_state_friction import relaxation_time
-
-
-def excess(gamma, gamma_crit):
-    """psi(gamma) and psi'(gamma) (module docstring)."""
-    over = np.abs(gamma) - gamma_crit
-    flowing = over > 0.0
-    return np.where(flowing, np.sign(gamma) * over, 0.0), flowing.astype(float)
+from .slip_state_friction import excess, relaxation_time
 
 
 class GrooveStateFriction(GrooveFriction):
@@ -82,8 +75,8 @@ class GrooveStateFriction(GrooveFriction):
 
     # ---- Term interface --------------------------------------------------------------------
     def add_residual(self, t, u, udot, f):
-        super().add_residual(t, u, udot, f)
-        _, _, tan, _, _, _, gamma, _, _ = self._evaluate(t, u)
+        p, _, tan, _, _, _, gamma, phi, _ = self._evaluate(t, u)      # once per residual
+        self.subtract_forces(self.slot_forces_of(t, p, tan, phi).sum(axis=0), f)
         psi, _ = excess(gamma, self.gamma_crit)
         rate = np.einsum("kn,kni->ni", psi, tan) / self.eta
         adot = 0.0 if udot is None else udot[self.ad]
@@ -93,12 +86,12 @@ class GrooveStateFriction(GrooveFriction):
         p, dp, tan, dtan, _, rel, gamma, phi, dphi = self._evaluate(t, u)
         c = self.mu(t) * self.groove.w
         tt = np.einsum("kni,knj->knij", tan, tan)                          # (3, n, 2, 2)
-        K_uu = self.force_jacobian(p, dp, tan, dtan, rel, phi, dphi, c)
+        dgamma = self.slip_gradient(tan, dtan, rel)
+        K_uu = self.force_jacobian(p, dp, tan, dtan, dgamma, phi, dphi, c)
         K_ua = -c[:, None, None] * np.einsum("kn,knij->nij",
                                              p * dphi / self.gamma_crit, tt)
         psi, dpsi = excess(gamma, self.gamma_crit)
         K_aa = (shift * np.eye(2)[None] + np.einsum("kn,knij->nij", dpsi, tt) / self.eta)
-        dgamma = -tan - np.einsum("knij,ni->knj", dtan, rel)
         K_au = (np.einsum("kn,kni,knj->nij", dpsi, tan, dgamma)
                 + np.einsum("kn,knij->nij", psi, dtan)) / self.eta
         return np.concatenate([np.concatenate([K[:, 0, 0], K[:, 0, 1], K[:, 1, 0], K[:, 1, 1]])

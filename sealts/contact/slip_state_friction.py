@@ -55,13 +55,18 @@ from .friction import check_law, saturation
 OVERSHOOT = 0.1          # delta / gamma_crit: the slide's overshoot at the largest rod speed
 
 
+def excess(z, gamma_crit):
+    """psi(z) = sgn(z) max(|z| - gamma_crit, 0) (mm) and psi'(z) (module docstring)."""
+    over = np.abs(z) - gamma_crit
+    flowing = over > 0.0
+    return np.where(flowing, np.sign(z) * over, 0.0), flowing.astype(float)
+
+
 def return_rate(w, z, gamma_crit, eta):
     """g = dz/dt (mm/s) of the module docstring at slip rate w (mm/s) and slip z (mm), and
     dg/dz (dg/dw is 1)."""
-    excess = np.abs(z) - gamma_crit
-    flowing = excess > 0.0
-    g = w - np.where(flowing, np.sign(z) * excess, 0.0) / eta
-    return g, np.where(flowing, -1.0 / eta, 0.0)
+    psi, dpsi = excess(z, gamma_crit)
+    return w - psi / eta, -dpsi / eta
 
 
 def relaxation_time(gamma_crit, v_ref):
