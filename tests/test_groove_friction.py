@@ -358,3 +358,43 @@ def test_groove_state_jacobian(rho):
     psi = np.sign(g[0]) * (np.abs(g[0]) - GC)
     assert alone.sum() > 3
     assert np.allclose(f[ad[alone, 1]], psi[alone] / fric.eta, rtol=1e-9, atol=0)
+
+
+def test_groove_state_history_under_ts_is_the_closed_form():
+    """One node pressed on the flat bottom (the side walls 0.48 mm away), moved along it at
+    u_z = V t up to T and back at -V after, its anchor integrated by TS (adaptive BDF, rtol
+    1e-7): its slip on the bottom, gamma = a_z - u_z, obeys gamma' = -V - psi(gamma)/eta,
+    the rod slip's law with the rod's motion mirrored, so gamma / gamma_crit is minus the
+    closed form of tests/test_slip_state_friction.py (stick, flow, unload, reflow) at every
+    accepted step within 1e-4, every branch visited; the anchor's radial part stays at zero
+    (no slip along the side walls' tangent); the force is the bottom's Coulomb limit
+    mu p w while it flows."""
+    from sealts.contact.groove_slip_state import GrooveStateFriction
+    from sealts.contact.slip_state_friction import relaxation_time
+    from sealts.core import Constraints, Recorder
+    from test_slip_state_friction import stick_slip_closed_form
+    X = np.array([[0.981, 0.5]])                       # 1 um into the bottom r = 0.98
+    groove = corner_groove(X, 0.0)
+    V, T, t_end = 1e-3, 0.3, 0.8
+    fric = GrooveStateFriction(groove, np.array([[2, 3]]), mu=0.1, v_ref=V)
+    eta = relaxation_time(GC, V)
+
+    def u_z(t):
+        return V * t if t <= T else V * (2 * T - t)
+
+    problem = Problem(4, [fric], constraints=Constraints(
+        np.array([0, 1]), lambda t: np.array([0.0, u_z(t)])))
+    rec = Recorder()
+    problem.transient(np.zeros(4), 0.0, t_end, 1e-4, stops=[T], observers=[rec], rtol=1e-7,
+                      atol=1e-12)
+    t = np.array([s[0] for s in rec.states])
+    U = np.array([s[1] for s in rec.states])
+    gamma = (U[:, 3] - U[:, 1]) / GC
+    exact, (t1, t2, t3) = stick_slip_closed_form(t, V, T, eta)
+    assert np.abs(gamma + exact).max() < 1e-4
+    for a, b in ((0.0, t1), (t1, T), (T, t2), (t2, t3), (t3, t_end)):
+        assert ((t > a) & (t < b)).sum() > 3, (a, b)
+    assert np.abs(U[:, 2]).max() == 0.0
+    p = groove_surfaces(groove, t_end, U[-1])[0][0, 0]
+    assert p > 1.0
+    assert fric.forces(t_end, U[-1])[0, 1] == pytest.approx(0.1 * p * groove.w[0], rel=1e-12)
