@@ -121,6 +121,47 @@ def test_a_front_that_flips_on_end_stops_the_run_naming_it():
         mf.event(1.0 + 1e-9 * MAX_FLIPS, None, [0])
 
 
+class SteepLoad(FakeLoad):
+    """Front 1's target falls eleven times faster than the front advances (as at 30 MPa
+    when the instroke starts): T(b) = b* - 11 (b - b*), consistent front b* = 10.5."""
+
+    def target_reach(self, pc, t):
+        if t < 0.1:                                   # at rest until t = 0.1
+            return list(self.reach)
+        return [10.5 - 11.0 * (self.reach[0] - 10.5), self.reach[1]]
+
+
+def march(mf, t_end=1.0, dt=1e-4):
+    """The front's events as TS meets them: a crossing of an indicator between two states
+    fires the event there (upwards for the even, downwards for the odd indicators)."""
+    before = mf.event_values(0.0, None)
+    for t in np.arange(dt, t_end + dt / 2, dt):
+        mf.add_residual(t, None, None, None)
+        now = mf.event_values(t, None)
+        up = (before[0::2] < 0.0) & (now[0::2] >= 0.0)
+        down = (before[1::2] > 0.0) & (now[1::2] <= 0.0)
+        which = [2 * i for i in np.flatnonzero(up)] + [2 * i + 1 for i in np.flatnonzero(down)]
+        if which:
+            mf.event(t, None, which)
+            now = mf.event_values(t, None)
+        before = now
+
+
+def test_a_front_that_overshoots_settles_where_its_target_is_its_own():
+    """Moved to its targets such a front swings about b* ever wider (each ramp overshoots
+    it eleven times as far); when the target turns back past the front within a ramp, the
+    front goes to the secant root of T(b) - b through its last two events, here b* exactly
+    (T linear), and stays there."""
+    load = SteepLoad([10.0, 20.0])
+    mf = MovingFront(load, lambda t, u: None, tol=0.1)
+    march(mf)
+    assert mf.reach_at(1.0)[0] == pytest.approx(10.5, abs=1e-9)
+    # up towards 16, once more as the target falls back by tol, then the turn: 3 moves
+    # (moved to its targets instead, the front swings ever wider: blow-by at t = 0.13)
+    assert mf.moves[0] == 3 and mf.moves[1] == 0
+    assert not mf.flips.any()
+
+
 def test_the_history_restores_the_ramps():
     load, mf = front()
     load.target = [11.0, 20.0]

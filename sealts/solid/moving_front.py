@@ -27,9 +27,17 @@ The wetting of the load at t is this term's: it sets the load's reach for each e
 (it comes before the load in the Problem's terms). The target is where g first turns
 positive walking from the fluid's entry, so a region of the seal that lifts off all at once
 moves it by many edges; a target that reaches the atmosphere side stops the run at once
-(blow-by). A front whose every move points it back (each position's equilibrium pointing
-at the other) would fire without end: after ``MAX_FLIPS`` reversals each within
-``FLIP_WINDOW`` of the last, the run stops and says where.
+(blow-by).
+
+The target depends on the front: the wet share phi of the front's edge enters g. Where the
+target falls faster than the front advances (dT/db < -1, met at 30 MPa as the instroke
+starts), moving the front to its target overshoots the consistent front b* = T(b*), and
+the target points back by more than tol before the ramp ends: a front moved to its
+targets swings about b* for ever. A target that turns back while the
+front's last ramp is still running (an overshoot) therefore ramps to the secant root of
+f(b) = T(b) - b through this event's (reach, target) and the last event's, which lies
+between the two. If flipping goes on all the same (``MAX_FLIPS`` reversals each within
+``FLIP_WINDOW`` of the last) the run stops and says where.
 """
 import numpy as np
 
@@ -40,13 +48,23 @@ FLIP_WINDOW = 1e-6       # ... within this time (s) of the last: a front that fl
 MIN_RAMP = 1e-6          # s: the shortest ramp (two events of one front at one time)
 
 
+def consistent_reach(b1, t1, b2, t2):
+    """The secant root of f(b) = T(b) - b through (b1, T(b1) = t1) and (b2, t2), f of
+    opposite signs there (a front that overshot): between b1 and b2; b2's target t2 where
+    the two reaches coincide."""
+    f1, f2 = t1 - b1, t2 - b2
+    if b1 == b2 or f1 == f2:
+        return t2
+    return b2 - f2 * (b2 - b1) / (f2 - f1)
+
+
 class MovingFront(Term):
     """The fronts of a pressure load (:class:`sealts.solid.pressure.PressureLoad` or
     :class:`sealts.solid.fluid_loads.FluidLoads`) moved towards their targets from TS
     events. ``contact_pressure(t, U)``: the nodal wall and rod contact pressures (MPa) at
     a state; ``tol``: the drift (edges) at which a front follows; ``t0``: the start."""
 
-    history_names = ("ramps", "moves", "flips")
+    history_names = ("ramps", "moves", "flips", "seen")
 
     def __init__(self, load, contact_pressure, tol=0.1, t0=0.0):
         if not tol > 0.0:
@@ -63,6 +81,14 @@ class MovingFront(Term):
         self.ramps = np.column_stack([np.full(n, float(t0)), np.ones(n), r, r])
         self.moves = np.zeros(n)          # events per front
         self.flips = np.zeros(n)          # reversals in a row, each within FLIP_WINDOW
+        self.seen = np.column_stack([r, r])   # per front (reach, target) at its last event
+
+    def restore(self, history):
+        """Put back a :meth:`history`; one saved before ``seen`` was kept takes each front's
+        last ramp (its start and goal) for it."""
+        if "seen" not in history:
+            history = {**history, "seen": np.asarray(history["ramps"], float)[:, 2:4]}
+        super().restore(history)
 
     def reach_at(self, t):
         """Each front's reach (edges) at t."""
@@ -99,9 +125,12 @@ class MovingFront(Term):
         target = np.array(self.load.target_reach(self.contact_pressure(t, u), t), float)
         fired = sorted({int(k) // 2 for k in which})
         for i in fired:
-            t_last, _, a_last, b_last = self.ramps[i]
-            d_new, d_last = np.sign(target[i] - now[i]), np.sign(b_last - a_last)
-            flip = self.moves[i] > 0 and d_new == -d_last and t - t_last <= FLIP_WINDOW
+            t_last, T_last = self.ramps[i, :2]
+            a_seen, b_seen = self.seen[i]
+            # the target turned to the other side of the front since the last event
+            back = (self.moves[i] > 0
+                    and np.sign(target[i] - now[i]) == -np.sign(b_seen - a_seen))
+            flip = back and t - t_last <= FLIP_WINDOW
             self.flips[i] = self.flips[i] + 1 if flip else 0
             if self.flips[i] >= MAX_FLIPS:
                 raise SolveError(
@@ -109,7 +138,11 @@ class MovingFront(Term):
                     f"{now[i]:.3f} and {target[i]:.3f} edges from its entry at t = {t:.6g} "
                     "s: each position's equilibrium points at the other (the seal's "
                     "contact there is bistable)")
-            self.ramps[i] = (t, max(t - t_last, MIN_RAMP), now[i], target[i])
+            goal = target[i]
+            if back and t < t_last + T_last:        # within the last ramp: an overshoot
+                goal = consistent_reach(a_seen, b_seen, now[i], target[i])
+            self.seen[i] = (now[i], target[i])
+            self.ramps[i] = (t, max(t - t_last, MIN_RAMP), now[i], goal)
             self.moves[i] += 1
         # a target on the atmosphere side is blow-by now, not at the ramp's end
         ends = now.copy()
