@@ -54,6 +54,8 @@ class Term:
       crosses zero that way (``TSSetEventHandler``), then calls ``event(t, u, which)``
       (``which``: the indices of the events that fired) and restarts its integrator. A
       change of the term there is discrete, recorded and located, not made between steps.
+      ``event`` may also set unknowns of its own in u (in place): the run goes on from the
+      changed state.
     """
 
     rows = cols = _NONE

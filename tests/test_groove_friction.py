@@ -350,14 +350,17 @@ def test_groove_state_jacobian(rho):
     # the forces are GrooveFriction's at the same anchors
     assert np.array_equal(fric.forces(t, U), ref.forces(t, u))
     # on the flat bottom (tangent e_z; the side walls' tangents are e_r) the anchor's z
-    # rate is -psi(gamma_0) / eta: the residual a' + sum psi t / eta at a' = 0
+    # rate is -w psi(gamma_0) / eta, w = p_0 / (p_0 + p_open) the bottom's touch: the
+    # residual a' + sum w psi t / eta at a' = 0
     f = np.zeros(n)
     fric.add_residual(t, U, np.zeros(n), f)
     g = ref.slip(t, u)
+    p0 = groove_surfaces(groove, t, u)[0][0]
     alone = (region == 0) & (np.abs(g[0]) > GC)
     psi = np.sign(g[0]) * (np.abs(g[0]) - GC)
-    assert alone.sum() > 3
-    assert np.allclose(f[ad[alone, 1]], psi[alone] / fric.eta, rtol=1e-9, atol=0)
+    w = p0 / (p0 + fric.p_open)
+    assert alone.sum() > 3 and (w[alone] > 0.9).any() and (w[alone] < 0.1).any()
+    assert np.allclose(f[ad[alone, 1]], (w * psi)[alone] / fric.eta, rtol=1e-9, atol=0)
 
 
 def test_groove_state_history_under_ts_is_the_closed_form():
@@ -398,3 +401,77 @@ def test_groove_state_history_under_ts_is_the_closed_form():
     p = groove_surfaces(groove, t_end, U[-1])[0][0, 0]
     assert p > 1.0
     assert fric.forces(t_end, U[-1])[0, 1] == pytest.approx(0.1 * p * groove.w[0], rel=1e-12)
+
+
+def test_a_node_that_lands_on_a_wall_starts_from_zero_slip():
+    """One node 30 um off the bottom (delta 1 um) moves 3 gamma_crit along it, then down
+    onto it and 1 um in, then rests. Off the wall its anchor hardly flows (no slot is
+    touched), so its slip on the bottom passes -gamma_crit; the landing event, located
+    where its gap falls to open_gap delta = 10 um (t = 0.3 + 0.3 * 20 / 31 s), sets its
+    anchor to its displacement: zero slip, and at rest on the bottom zero friction. Without
+    the event (a deliberate break) the slip would be saturated on landing and the force the
+    Coulomb limit mu p w."""
+    from sealts.contact.groove_slip_state import GrooveStateFriction
+    from sealts.core import Constraints, Recorder
+    X = np.array([[0.95, 0.5]])
+    groove = corner_groove(X, 0.0)
+    V, T1, T2, t_end = 1e-3, 0.3, 0.6, 0.8
+    landed = []
+
+    class Logged(GrooveStateFriction):
+        def event(self, t, u, which):
+            landed.append((t, -(u[1] - u[3]) / GC))
+            super().event(t, u, which)
+
+    fric = Logged(groove, np.array([[2, 3]]), mu=0.1, v_ref=V)
+
+    def prescribed(t):
+        u_z = V * min(t, T1)
+        u_r = 0.031 * min(max(t - T1, 0.0), T2 - T1) / (T2 - T1)
+        return np.array([u_r, u_z])
+
+    problem = Problem(4, [fric], constraints=Constraints(np.array([0, 1]), prescribed))
+    rec = Recorder()
+    problem.transient(np.zeros(4), 0.0, t_end, 1e-4, stops=[T1, T2], observers=[rec],
+                      rtol=1e-7, atol=1e-12)
+    (t_land, gamma_land), = landed
+    assert t_land == pytest.approx(T1 + (T2 - T1) * 20.0 / 31.0, abs=1e-6)
+    # off the wall the anchor did not trail its node within gamma_crit (it flows with the
+    # touch weight p / (p + p_open), which reaches 1/2 only at the landing gap)
+    assert gamma_land < -1.5
+    U = rec.states[-1][1]
+    gamma = fric.slip(t_end, U)[0, 0]
+    p = groove_surfaces(groove, t_end, U)[0][0, 0]
+    assert p > 1.0 and abs(gamma) < 1e-9 * GC
+    assert abs(fric.forces(t_end, U)[0, 1]) < 1e-9 * 0.1 * p * groove.w[0]
+
+
+@pytest.mark.parametrize("gap", [8e-3, 10e-3, 12e-3])
+def test_groove_state_jacobian_at_the_touch(gap):
+    """Where a slot's touch weight w = p / (p + p_open) turns (gaps of 8-12 delta), with
+    slips beyond gamma_crit on the bottom and along the side walls' tangent: the anchors'
+    rows against central differences in U and U' (to 1e-6 of the largest entry), which
+    the weight's derivative dw/dp dp/dx carries."""
+    from sealts.contact.groove_slip_state import GrooveStateFriction
+    X = np.array([[0.98 - gap, 0.5], [0.98 - gap - 0.001, 0.6]])
+    groove = corner_groove(X, 0.0)
+    u = np.array([0.0, 0.0, 3e-4, -2e-4])
+    fric = GrooveStateFriction(groove, np.array([[4, 5], [6, 7]]), mu=0.1, v_ref=1.0)
+    U = np.concatenate([u, [2.5 * GC, -2.0 * GC, -1.5 * GC, 2.0 * GC]])
+    n = U.size
+    Ud = np.random.default_rng(2).uniform(-1.0, 1.0, n)
+    problem = Problem(n, [fric])
+    shift = 3.0
+    J = problem.jacobian_dense(0.0, U, Ud, shift)
+    eps = 1e-9
+    fd = np.zeros((n, n))
+    for j in range(n):
+        e = np.zeros(n)
+        e[j] = eps
+        fd[:, j] = ((problem.residual(0.0, U + e, Ud) - problem.residual(0.0, U - e, Ud))
+                    / (2 * eps)
+                    + shift * (problem.residual(0.0, U, Ud + e) - problem.residual(0.0, U, Ud - e))
+                    / (2 * eps))
+    w = fric.touch(groove_surfaces(groove, 0.0, u)[0][0])[0]
+    assert (w > 0.05).all() and (w < 0.99).all()
+    assert np.abs(J - fd).max() <= 1e-6 * np.abs(J).max()

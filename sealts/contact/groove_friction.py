@@ -143,6 +143,7 @@ class GrooveFriction(Term):
         self.anchors = np.zeros((m, 2)) if anchors is None else np.array(anchors, float)
         if self.anchors.shape != (m, 2):
             raise ValueError("anchors must give an (r, z) pair per groove node")
+        self.open_gap = float(open_gap)
         self.p_open = g.k * g.delta * np.log1p(np.exp(-open_gap))
         self.slide = 0.0             # the last update's largest slide on a wall (mm)
         self.rows = np.concatenate([g.ur, g.ur, g.uz, g.uz]).astype(np.int64)

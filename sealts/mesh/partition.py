@@ -270,7 +270,7 @@ class SerialTermOnLocal(HookOnly):
     residual rows are copied back. O(the term's dofs) per call; the term object is shared,
     so state updated between steps (the pressure front) is seen here. Its hook and history
     are the term's own (u is full and serial already), as on the ranks that run it through
-    :class:`HookOnly`."""
+    :class:`HookOnly`; so are its events (the other ranks have none of them)."""
 
     def __init__(self, term, local_of_serial):
         self.term = term
@@ -284,6 +284,16 @@ class SerialTermOnLocal(HookOnly):
         self.cols = local_of_serial[np.asarray(term.cols, np.int64)]
         n = local_of_serial.size
         self._u, self._ud, self._f = np.zeros(n), np.zeros(n), np.zeros(n)
+
+    @property
+    def event_directions(self):
+        return self.term.event_directions
+
+    def event_values(self, t, u):
+        return self.term.event_values(t, u)       # u full and serial already
+
+    def event(self, t, u, which):
+        self.term.event(t, u, which)
 
     def _load(self, u, udot):
         self._u[self._ser] = u[self._loc]

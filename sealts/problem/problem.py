@@ -446,15 +446,29 @@ class Problem:
 
         def post(ts, events, t, X, forward):
             u = self.gather(X).copy()
+            before = u.copy()
             events = np.asarray(events, int)
             for x, end, size in zip(terms, ends, sizes):
                 mine = events[(events >= end - size) & (events < end)] - (end - size)
                 if mine.size:
                     call(x.event, t, u, mine)
+            self._set_from_events(X, before, u)
             ts.restartStep()
 
         ts.setEventHandler([d for x in terms for d in x.event_directions],
                            [False] * int(ends[-1]), indicator, post)
+
+    def _set_from_events(self, X, before, u):
+        """Write the unknowns that events set in u (full, serial) into X. The ranks' terms
+        set disjoint unknowns (a boundary term runs on one rank), so the changes add up;
+        collective."""
+        change = u - before
+        if self.comm.getSize() > 1:
+            from mpi4py import MPI
+            change = self.comm.tompi4py().allreduce(change, op=MPI.SUM)
+        if not change.any():
+            return
+        X.setArray(X.getArray(readonly=True) + change[self._serial_owned])
 
     def accepted(self, t, u):
         """Every term's post-step hook at the accepted state u (full, serial order)."""
