@@ -48,7 +48,7 @@ max pressure error per scheme and element count, as ``scripts/bench_film.py`` me
 Writes benchmarks/work_precision.md (tables, machine, date, load), .csv and .png (wall time
 against the net leakage's error per family; wall time against unknowns). Usage:
 
-    .venv/bin/python scripts/bench_work_precision.py            # ~55 min here
+    .venv/bin/python scripts/bench_work_precision.py            # 27-55 min here
     .venv/bin/python scripts/bench_work_precision.py --quick    # rtol and mesh, ~5 min
     .venv/bin/python scripts/bench_work_precision.py --families mesh,layer   # some families
     .venv/bin/python scripts/bench_work_precision.py --reference   # the reference, once
