@@ -37,9 +37,17 @@ the default since: the rod's elastic slips and the groove walls' anchors; the ro
 moved their anchors after each step), 3,487 unknowns (the 2,822, a slip per rod-side node
 and two anchors per boundary node), 2026-12-04:
 
-    0.025  / 0.2     1e-2    3,487     348   15.97   84.79  -68.82   67.43 / 62.94  <- this
+    0.025  / 0.2     1e-2    3,487     348   15.97   84.79  -68.82   67.43 / 62.94
     0.025  / 0.2     1e-3    3,487     746   15.96   84.78  -68.82   67.43 / 62.96
     0.025  / 0.2     1e-4    3,487   1,646   15.96   84.78  -68.82   67.43 / 62.96
+
+and with the walls' anchors flowing on the slots a node touches only, a slot it lands on
+starting from zero slip (the default since; the rows above let every slot flow), from
+benchmarks/work_precision.csv (stroke steps: its steps less steps 1-2's 180), 2026-12-04:
+
+    0.025  / 0.2     1e-2    3,487     350   15.97   84.79  -68.82   67.43 / 62.95  <- this
+    0.025  / 0.2     1e-3    3,487     722   15.95   84.78  -68.83   67.43 / 62.96
+    0.025  / 0.2     1e-4    3,487   1,615   15.96   84.78  -68.82   67.43 / 62.96
 
 With the film pressures held to 1e-6 MPa (2026-12-02) the 0.025 / 0.2 cycle took 1,549
 steps at rtol 1e-3 and 3,444 at 1e-4 to the same numbers.
