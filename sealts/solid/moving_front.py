@@ -33,9 +33,9 @@ The target depends on the front: the wet share phi of the front's edge enters g.
 target falls faster than the front advances (dT/db < -1, met at 30 MPa as the instroke
 starts), moving the front to its target overshoots the consistent front b* = T(b*), and
 the target points back by more than tol before the ramp ends: a front moved to its
-targets swings about b* for ever. A target that turns back while the
-front's last ramp is still running (an overshoot) therefore ramps to the secant root of
-f(b) = T(b) - b through this event's (reach, target) and the last event's, which lies
+targets swings about b* for ever. A target that turns back past the front while the
+front's last ramp is still running (an overshoot) therefore sends it to the secant root
+of f(b) = T(b) - b through this event's (reach, target) and the last event's, which lies
 between the two. If flipping goes on all the same (``MAX_FLIPS`` reversals each within
 ``FLIP_WINDOW`` of the last) the run stops and says where.
 """
