@@ -22,6 +22,8 @@ the default scene's 0.025 mm contact mesh) and ten times the paper's; ``friction
 ``rtol`` 1e-2 and 1e-4; ``velocity`` constant, ramp-hold and an abrupt start-stop-reverse
 table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
 flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
+``scene_mesh`` 10, 20, 30 and 40 MPa, and 30 MPa at 2000 mm/s, on the shipped scene's
+0.025 / 0.2 mm mesh;
 ``stabilisation`` 10 and 40 MPa and the smooth rod with stroke.stabilisation = 1e-3;
 ``clearance`` extrusion gaps of 0.02, 0.05 and 0.1 mm at 1, 5 and 10 MPa; ``back`` a back
 pressure p_out (p_in = p_out = 1 MPa, 10 against 5 MPa, and 1 MPa on the atmosphere side
@@ -98,6 +100,12 @@ FACTORS = {
              for p in (5.0, 20.0)],
     "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
              ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
+    # the high pressures on the mesh a user runs first (the shipped scene's)
+    "scene_mesh": [(f"p_in {p:g} MPa{a}, mesh 0.025 / 0.2",
+                    {"fluid": {"p_in": float(p)}, "mesh": {"h_contact": 0.025},
+                     "stroke": {"v_max": float(v)}})
+                   for p, v, a in ((10, 500, ""), (20, 500, ""), (30, 500, ""), (40, 500, ""),
+                                   (30, 2000, ", v_max 2000 mm/s"))],
     # the operating map: sealed pressure x extrusion gap (none, the default, and 0.1 mm) x
     # the sine's amplitude
     "grid": [(f"p_in {p:g} MPa, clearance {c:g} mm, v_max {v:g} mm/s",

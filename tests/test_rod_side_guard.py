@@ -38,6 +38,25 @@ def test_nodes_pressed_flat_against_a_wall_are_not_a_fold():
     RodSideGuard(side, depth=7e-4).accepted(0.0, u)
 
 
+def test_nodes_pressed_into_a_wall_out_of_order_are_not_a_fold():
+    """The rod side runs up a groove wall (its last three nodes along r at the wall's z),
+    pressed into it to depths that differ by 6 um, more than a tenth of the element: the
+    element runs along the wall, not backwards along the rod, so no stop; the same 6 um
+    reversal along the rod is one."""
+    side, u = chain()
+    z_wall = 0.2
+    for k, (dr, depth) in enumerate(((0.05, 2e-3), (0.10, 8e-3), (0.15, 2e-3)), start=3):
+        u[side.ur[k]] = dr                              # up the wall, radially ...
+        u[side.uz[k]] = z_wall + depth - side.Z[k]      # ... into it by 2, 6, 2 um
+    u[side.uz[3]] -= 0.05                               # node 3 at the corner with node 2
+    u[side.ur[3]] = 0.0
+    guard = RodSideGuard(side, depth=7e-4)
+    guard.accepted(0.0, u)                              # nodes 4 > 5 in z by 6 um: no stop
+    u[side.ur[5]] = u[side.ur[4]]                       # node 5 beside node 4 on the rod ...
+    with pytest.raises(SolveError, match="folds over between nodes 4 and 5"):
+        guard.accepted(0.0, u)                          # ... 6 um behind it: a fold
+
+
 def test_a_node_off_the_rod_side_inside_the_rod_stops_the_run():
     side, u = chain()
     u[2 * 6] = -0.501 - 1e-3                           # the off node to r = 0.999 - 1e-3

@@ -121,6 +121,92 @@ def test_seal_film_jacobian(tmp_path, factors, end, normal, gap):
     assert np.abs(Jshift[np.ix_(blocks["uz"], blocks["ur"])]).max() > 0   # Eq. 33's rates
 
 
+def test_film_where_the_rod_side_runs_up_a_wall(tmp_path):
+    """The last five chain nodes pressed into a groove wall (as at 30-40 MPa, where the rod
+    side runs up the atmosphere-side wall): one axial position to within microns, out of
+    order (two elements reversed by 3 and 1 um), gaps of 50-250 um. The film takes their
+    elements as short positive ones (reynolds_fv, "Element lengths"): its rows stay finite,
+    its Jacobian matches central differences as on a forward chain, and its balance still
+    closes on the content A sum_i M_i h_i with M_i from those lengths (to round-off of the
+    flows); with the raw axial lengths the reversed elements' conductances turn negative."""
+    mesh, layout = coarse(tmp_path)
+    term = make_term(mesh, layout, "none", "min_z", surface_normal=True, shear=True)
+    c, t = layout.rod_nodes, 0.3
+    ur, uz, pd = layout.udofs[c, 0], layout.udofs[c, 1], layout.film_dofs
+    u, ud = seal_state(mesh, layout, 5, t, h_low=None)
+    ud[uz] = 0.0
+    wall = mesh.X[c[-6], 1] + u[uz[-6]] + 0.01
+    y_wall = wall + np.array([2e-3, 5e-3, 2e-3, 3e-3, 1e-3])     # two reversals, 3 and 1 um
+    h_wall = np.array([0.05, 0.1, 0.15, 0.2, 0.25])
+    u[uz[-5:]] = y_wall - mesh.X[c[-5:], 1]
+    u[ur[-5:]] = rod(t) + h_wall - mesh.X[c[-5:], 0]
+    u[pd[-6:]] = 0.2                                            # p_out, as on the wall
+    y = mesh.X[c, 1] + u[uz]
+    assert np.sum(np.diff(y) < 0) == 2
+    term.set_row_scale(t, u, ud)
+    problem = Problem(layout.n, [term])
+    f = problem.residual(t, u, ud)
+    assert np.all(np.isfinite(f))
+    # the elements' conductances 1/(L I1) = dq/dp_a: all positive
+    ff = FlowFactors.none()
+    h = mesh.X[c, 0] + u[ur] - rod(t)
+    _, dqa, *_ = element_fluxes(y, h, u[pd], 80.0, ETA, H_FLOOR, ff.model, ff.par,
+                                ff.table_h, ff.table_pp, ff.table_ps)
+    assert np.all(dqa > 0.0)
+    # the balance closes on the content: interior rows add up to Q_in - Q_out - dV/dt
+    balance = f[pd][1:-1] / term.row_scale[1:-1]
+    Q_in, Q_out = term.flows(t, u, ud)
+    dvol = (term.content(t + 0.5, u + 0.5 * ud) - term.content(t - 0.5, u - 0.5 * ud))
+    scale = max(abs(Q_in), abs(Q_out), abs(dvol)) / AREA
+    assert abs(balance.sum() - (dvol - (Q_in - Q_out)) / AREA) <= 1e-10 * scale
+    # the Jacobian against central differences: row by row, block by block, and row by row
+    # within the film rows' u_z block (where the wall's storage moves with its lengths), at
+    # this state and with pressures that differ along the wall (the lengths in the flows)
+    blocks = {"p": pd, "ur": ur, "uz": uz}
+    eps = {"p": 1e-6, "ur": 1e-8, "uz": 1e-8}
+    dofs = np.concatenate(list(blocks.values()))
+    shift = 37.0
+    for p_wall in (np.full(6, 0.2), np.random.default_rng(6).uniform(0.0, 2.0, 6)):
+        u[pd[-6:]] = p_wall
+        term.set_row_scale(t, u, ud)
+        J0 = problem.jacobian_dense(t, u, ud, 0.0)
+        Jshift = (problem.jacobian_dense(t, u, ud, shift) - J0) / shift
+        fd_u, fd_ud = central_differences(problem, t, u, ud, blocks, eps, layout.n)
+        for J, fd in ((J0, fd_u), (Jshift, fd_ud)):
+            a, b = J[np.ix_(dofs, dofs)], fd[np.ix_(dofs, dofs)]
+            scale = np.maximum(np.abs(a).max(1), 1e-8 * np.abs(J0[dofs]).max(1))
+            err = np.abs(a - b).max(1) / scale
+            assert err.max() <= 1e-6, (dofs[err.argmax()], err.max())
+            for rows in blocks.values():
+                for cols in blocks.values():
+                    a, b = J[np.ix_(rows, cols)], fd[np.ix_(rows, cols)]
+                    assert np.abs(a - b).max() <= 1e-6 * max(np.abs(a).max(), np.abs(b).max())
+            a, b = J[np.ix_(pd, uz)], fd[np.ix_(pd, uz)]
+            row = np.maximum(np.abs(a).max(1), np.abs(b).max(1))
+            assert np.all(np.abs(a - b).max(1) <= 1e-6 * row + 1e-14)
+    # the leakage rows, whose outlet element is the last, reversed one
+    from sealts.film.seal_film import LeakageTerm
+    n = layout.n + 2
+    leak = LeakageTerm(term, [layout.n, layout.n + 1])
+    uu, uud = np.zeros(n), np.zeros(n)
+    uu[:layout.n], uud[:layout.n] = u, ud
+    lp = Problem(n, [leak])
+    rows = [layout.n, layout.n + 1]
+    for s_ in (0.0, 23.0):
+        J = lp.jacobian_dense(t, uu, uud, s_)
+        fd = np.zeros((2, n))
+        for j in np.unique(leak.cols):
+            e = np.zeros(n)
+            e[j] = 1e-6 if j in pd else 1e-8
+            fd[:, j] = (lp.residual(t, uu + e, uud)[rows] - lp.residual(t, uu - e, uud)[rows]
+                        ) / (2 * e[j])
+            if s_:
+                e[j] = 1e-2
+                fd[:, j] += s_ * (lp.residual(t, uu, uud + e)[rows]
+                                  - lp.residual(t, uu, uud - e)[rows]) / 2e-2
+        assert np.all(np.abs(J[rows] - fd).max(1) <= 1e-6 * np.abs(J[rows]).max(1))
+
+
 @pytest.mark.parametrize("end", ["min_z", "max_z"])
 def test_rigid_limit_is_the_film_only_scheme(tmp_path, end):
     """On the same nodes (y, h, dh/dt) the film rows are the ControlVolumeScheme's rows of the

@@ -7,28 +7,36 @@ from passing through: a run would only crawl on (dt ~ 1e-7 s). A term without ro
 post-step hook ``accepted`` checks every accepted state.
 
 A fold: squeezed into the corner between rod and groove wall (40 MPa on the paper's O-ring
-with no clearance), the rod side's surface buckles and an element of the chain turns over
-(its current axial length against the reference order below -FOLD of its reference length;
-the film's control volumes would turn negative). The seal then touches itself, which the
-model does not include: the run stops and says where. Nodes pressed flat against a wall sit
-at one axial position to round-off, far above that bound.
+with no clearance), the rod side's surface buckles and an element of the chain turns over:
+its current axial length against the reference order falls below -FOLD of its reference
+length, and the element points backwards along the rod (its axial length below -BACK of
+its current length). The seal then touches itself, which the model does not include: the
+run stops and says where. Where the rod side runs up a groove wall, its nodes are pressed
+into the wall by the wall's penalty (about 0.1 um per MPa) to depths that differ from node
+to node, so neighbours there swap their axial order by microns (4 um at 40 MPa, more than
+FOLD of a 0.025 mm element): their element runs along the wall, radially, and is not a fold
+(the film takes it as a short positive element, :mod:`sealts.film.reynolds_fv`). Nodes
+pressed flat against a wall sit at one axial position to round-off, far above that bound.
 """
 import numpy as np
 
 from ..core import SolveError, Term
 
-FOLD = 0.1      # an element inverted by a tenth of its reference length
+FOLD = 0.1      # an element inverted by a tenth of its reference length ...
+BACK = 0.5      # ... and pointing backwards along the rod (within 60 degrees of it)
 
 
 def fold(side, u):
-    """The rod-side element most turned over (its current axial length against the
-    reference order, below -FOLD of its reference length), by its first chain index; -1 if
-    none is."""
+    """The rod-side element most turned over (module docstring: its current axial length
+    against the reference order below -FOLD of its reference length and below -BACK of its
+    current length), by its first chain index; -1 if none is."""
     dz = np.diff(side.Z)
     if dz.size == 0:
         return -1
     order = np.sign(np.median(dz))
-    ratio = order * np.diff(side.y(u)) / np.abs(np.where(dz != 0.0, dz, np.inf))
+    dy = order * np.diff(side.y(u))
+    back = dy < -BACK * np.hypot(dy, np.diff(side.r(u)))
+    ratio = np.where(back, dy / np.abs(np.where(dz != 0.0, dz, np.inf)), np.inf)
     k = int(np.argmin(ratio))
     return k if ratio[k] < -FOLD else -1
 
@@ -49,12 +57,13 @@ class RodSideGuard(Term):
         k = fold(side, u)
         if k < 0:
             return
-        y = side.y(u)
+        y, h = side.y(u), side.gap(t, u) * 1e3
         a, b = side.chain[k], side.chain[k + 1]
         raise SolveError(f"at t = {t:.6g} the rod side folds over between nodes {a} and {b} "
-                         f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm): the seal is squeezed into "
-                         "a corner and touches itself, which the model does not include "
-                         "(self-contact)")
+                         f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm, {h[k]:.3g} and "
+                         f"{h[k + 1]:.3g} um from the rod): the seal's surface turns back "
+                         "along the rod and would touch itself, which the model does not "
+                         "include (self-contact)")
 
     def _check_off(self, t, u):
         depth = self.side.off_depth(t, u)

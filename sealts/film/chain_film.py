@@ -15,6 +15,7 @@ import numpy as np
 
 from ..core import Term, of_time
 from .flow_factors import FlowFactors
+from .reynolds_fv import element_lengths
 
 
 class ChainFilm(Term):
@@ -75,16 +76,22 @@ class ChainFilm(Term):
         return -u[self.pd] * s.area * s.lengths_of(s.r(u))
 
     def content(self, t, u):
-        """The fluid the film holds (mm^3): V_film = A sum_i L_i h_eff_i (h_eff: the gap
-        above its floor, :mod:`sealts.film.gap`). The default scheme's balance is
-        Q_in - Q_out = A sum_i L_i dh_eff_i/dt, so over a run V_in - V_out equals the change
-        of V_film but for A sum_i h_eff_i dL_i/dt, the seal's axial surface motion, which
+        """The fluid the film holds (mm^3): V_film = A sum_i M_i h_eff_i (h_eff: the gap
+        above its floor, :mod:`sealts.film.gap`; M_i the default scheme's control volumes,
+        half the adjacent element lengths, which are the tributary lengths L_i wherever the
+        chain runs forward along the rod). The default scheme's balance is
+        Q_in - Q_out = A sum_i M_i dh_eff_i/dt, so over a run V_in - V_out equals the change
+        of V_film but for A sum_i h_eff_i dM_i/dt, the seal's axial surface motion, which
         the film neglects (Eq. 21), and the time integration's error."""
         s, f = self.side, self.h_floor
         h = s.gap(t, u)
         he = h if f <= 0.0 else np.where(h >= 2.0 * f, h,
                                          f * (1.0 + np.exp(np.minimum(h / f - 2.0, 0.0))))
-        return float(s.area * s.lengths(u) @ he)
+        half = 0.5 * element_lengths(s.y(u))[0]
+        M = np.zeros(s.m)
+        M[:-1] += half
+        M[1:] += half
+        return float(s.area * M @ he)
 
     def pressure(self, u):
         """The film pressures in chain order (MPa)."""

@@ -15,7 +15,7 @@ import numba
 import numpy as np
 
 from .gap import h_eff
-from .reynolds_fv import control_volumes
+from .reynolds_fv import control_volumes, element_lengths
 
 
 def specific_area(symmetry, width=1.0, radius=1.0):
@@ -25,7 +25,7 @@ def specific_area(symmetry, width=1.0, radius=1.0):
 
 def weighted_gradient(y, f, beta):
     """Nodal df/dy, beta-weighted between the left and the right difference (Eq. 33)."""
-    d = np.diff(f) / np.diff(y)
+    d = np.diff(f) / element_lengths(y)[0]
     g = np.empty_like(f)
     g[0], g[-1] = d[0], d[-1]
     g[1:-1] = beta * d[:-1] + (1.0 - beta) * d[1:]

@@ -25,6 +25,19 @@ Discretisation on nodes y_1 < ... < y_n (the seal surface nodes in the coupled p
   end control volumes, Q_in = q_{3/2} + M_1 dh_1/dt and Q_out = q_{n-1/2} - M_n dh_n/dt, so
   Q_in - Q_out = d/dt sum_i M_i h_eff_i holds to round-off: the discrete mass balance is exact.
 
+Element lengths. On the seal the nodes are the rod side's, at their current axial positions,
+and where the rod side runs up a groove wall (pressed into it by the seal) neighbours share
+one axial position to within the wall penalty's compliance, about 0.1 um per MPa, in either
+order. The scheme takes every element length as
+
+    L_e = sqrt(dy_e^2 + EPS_L^2),   dy_e = y_b - y_a,
+
+so a reversed element is a short positive one and a vanishing one stays positive: it lies on
+the wall, far from the rod, where the film's resistance L / h^3 is nil whatever L. EPS_L
+(1e-9 mm) only keeps L_e positive and smooth where dy_e passes zero; an element of the
+contact meshes (0.01 mm and more) keeps its length to round-off. The control volumes M_i of
+the balance are half sums of the L_e.
+
 h enters through :func:`sealts.film.gap.h_eff` (see there for the regularisation at h <= 0),
 and the conductance uses Phi_p through the same C1 floor, smooth_floor(Phi_p, PHI_P_MIN), so a
 flow factor that vanishes in full contact (Patir-Cheng below H = 0.5, a table starting at 0)
@@ -38,10 +51,25 @@ from .flow_factors import flow_factors
 from .gap import h_eff, h_eff_rate, smooth_floor
 
 PHI_P_MIN = 1e-3
+EPS_L = 1e-9          # mm: the element lengths' floor (module docstring)
 
 # 3-point Gauss-Legendre on [0, 1]
 _GX = np.array([0.5 - 0.5 * np.sqrt(0.6), 0.5, 0.5 + 0.5 * np.sqrt(0.6)])
 _GW = np.array([5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0])
+
+
+@numba.njit(cache=True)
+def element_length(dy):
+    """L = sqrt(dy^2 + EPS_L^2) and dL/d(dy) of one element (module docstring)."""
+    L = np.sqrt(dy * dy + EPS_L * EPS_L)
+    return L, dy / L
+
+
+def element_lengths(y):
+    """The element lengths L_e of positions ``y`` and dL_e/d(dy_e) (arrays, n - 1)."""
+    dy = np.diff(y)
+    L = np.sqrt(dy * dy + EPS_L * EPS_L)
+    return L, dy / L
 
 
 @numba.njit(cache=True)
@@ -84,7 +112,7 @@ def element_fluxes(y, h, p, v, eta, h_floor, model, par, th, tpp, tps):
     dha = np.empty(ne)
     dhb = np.empty(ne)
     for e in range(ne):
-        L = y[e + 1] - y[e]
+        L = element_length(y[e + 1] - y[e])[0]
         i1 = 0.0
         i2 = 0.0
         di1a = 0.0
@@ -115,7 +143,8 @@ def element_fluxes(y, h, p, v, eta, h_floor, model, par, th, tpp, tps):
 
 @numba.njit(cache=True)
 def storage(y, h, hd, h_floor):
-    """Nodal storage M_i dh_eff_i/dt and its derivatives with respect to h_i and dh_i/dt."""
+    """Nodal storage M_i dh_eff_i/dt (M_i half the adjacent element lengths) and its
+    derivatives with respect to h_i and dh_i/dt."""
     n = y.size
     s = np.empty(n)
     ds_dh = np.empty(n)
@@ -123,9 +152,9 @@ def storage(y, h, hd, h_floor):
     for i in range(n):
         m = 0.0
         if i > 0:
-            m += 0.5 * (y[i] - y[i - 1])
+            m += 0.5 * element_length(y[i] - y[i - 1])[0]
         if i < n - 1:
-            m += 0.5 * (y[i + 1] - y[i])
+            m += 0.5 * element_length(y[i + 1] - y[i])[0]
         rate, drate = h_eff_rate(h[i], hd[i], h_floor)
         s[i] = m * rate
         ds_dh[i] = m * drate

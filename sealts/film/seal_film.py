@@ -17,8 +17,11 @@ and the seal displacements; this term owns
   :mod:`sealts.film.reynolds_fv` for the transient Reynolds equation (Eq. 13),
 
       R_i = M_i dh_eff_i/dt + q_{i+1/2} - q_{i-1/2} = 0,
-      q_e = (I2_e - (p_b - p_a) / L_e) / I1_e,   L_e = y_b - y_a,
-      M_i = (y_{i+1} - y_{i-1}) / 2,
+      q_e = (I2_e - (p_b - p_a) / L_e) / I1_e,   L_e = sqrt((y_b - y_a)^2 + EPS_L^2),
+      M_i = (L_{i-1/2} + L_{i+1/2}) / 2,
+
+  (L_e is y_b - y_a but where the rod side lies along a groove wall and its nodes share
+  one axial position: :mod:`sealts.film.reynolds_fv`, "Element lengths")
 
   each multiplied by a fixed positive row scale (so the rows read in MPa), with the
   Dirichlet rows p = p_in at the pressurised end of the chain and p = p_out at the other;
@@ -47,10 +50,11 @@ Exact Jacobian (the chain rule through the gap provider, docs/design.md):
 * dq_e/dp_a = 1/(L I1), dq_e/dp_b = -1/(L I1) and dq_e/dh_a, dq_e/dh_b from
   :func:`sealts.film.reynolds_fv.element_fluxes`, with dh/du_r = 1;
 * dq_e/dL = (p_b - p_a) / (L^2 I1) (I1, I2 are averages over the element in its own
-  coordinate, independent of L), with dL/du_z,b = 1, dL/du_z,a = -1;
+  coordinate, independent of L), with dL/du_z,b = c_e, dL/du_z,a = -c_e, c_e = dy_e / L_e;
 * the storage S_i = M_i h_eff'(h_i) dh_i/dt: dS/dh_i from :func:`storage`, dS/d(dh_i/dt)
-  = M_i h_eff'(h_i) times the TS ``shift`` on u_r,i (dh'/du' = 1), and
-  dS/du_z,i+-1 = +-1/2 h_eff'(h_i) dh_i/dt through M_i;
+  = M_i h_eff'(h_i) times the TS ``shift`` on u_r,i (dh'/du' = 1), and through M_i
+  dS/du_z,i+1 = c_{i+1/2} / 2, dS/du_z,i-1 = -c_{i-1/2} / 2, dS/du_z,i = (c_{i-1/2} -
+  c_{i+1/2}) / 2, each times h_eff'(h_i) dh_i/dt;
 * dF_r,i/dp_i = A L_i, dF_r,i/du_z,hi = p_i A / 2, dF_r,i/du_z,lo = -p_i A / 2;
   dF_z,i/dp_i = -A (r_hi - r_lo)/2, dF_z,i/du_r,hi = -p_i A / 2, dF_z,i/du_r,lo = p_i A / 2.
 
@@ -74,7 +78,8 @@ import numpy as np
 from ..core import Term
 from .chain_film import ChainFilm
 from .gap import h_eff
-from .reynolds_fv import conductance, element_fluxes, storage
+from .reynolds_fv import (conductance, element_fluxes, element_length,
+                          element_lengths, storage)
 
 
 @numba.njit(cache=True)
@@ -121,8 +126,10 @@ class SealFilmTerm(ChainFilm):
         c6 = np.repeat(ecols[:, None, :], 2, 1)
         self._ekeep = ((r6 != 0) & (r6 != m - 1)).ravel()
         i = np.arange(1, m - 1)                                       # interior nodes
-        self._rows_film = np.concatenate([r6.ravel()[self._ekeep], i, i, i])
-        film_cols = np.concatenate([c6.ravel()[self._ekeep], ur[i], uz[i + 1], uz[i - 1]])
+        # storage: M_i dh_i/dt, M_i half the element lengths on either side
+        self._rows_film = np.concatenate([r6.ravel()[self._ekeep], i, i, i, i])
+        film_cols = np.concatenate([c6.ravel()[self._ekeep], ur[i], uz[i + 1], uz[i - 1],
+                                    uz[i]])
         # nodal radial forces, the rod side's neighbours for L_i
         self.surface_normal = surface_normal
         rows = [pd[self._rows_film], [pd[0], pd[-1]], ur, ur, ur]
@@ -197,7 +204,7 @@ class SealFilmTerm(ChainFilm):
             fluxes = self._fluxes(t, y, h, hd, p, v)
         q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = fluxes
         he, dhe, ik, dik, cv, dcv = nodal_conductance(h, eta, self.h_floor, *self._ffargs())
-        L = np.diff(y)
+        L, cl = element_lengths(y)
         qn = np.empty(m)
         qn[1:-1] = 0.5 * (q[:-1] + q[1:])
         qn[0], qn[-1] = q[0] + s[0], q[-1] - s[-1]
@@ -222,16 +229,16 @@ class SealFilmTerm(ChainFilm):
         # q_i through the element flows: mean of two inside, the end elements' own at the ends
         wa = np.where(a == 0, 1.0, 0.5) * cq[a]
         wb = np.where(b == m - 1, 1.0, 0.5) * cq[b]
-        dqL = (p[1:] - p[:-1]) * dqa / L
+        dqL = (p[1:] - p[:-1]) * dqa / L * cl
         ecols = [pd[a], pd[b], ur[a], ur[b], uz[a], uz[b]]
         for col, d in zip(ecols, (dqa, dqb, dha, dhb, -dqL, dqL)):
             rows += [a, b]
             cols += [col, col]
             vals += [wa * d, wb * d]
         # q_1 = q_3/2 + S_1 and q_n = q_n-1/2 - S_n: the end storage, M = half an element
-        for k, nb, sign in ((0, 1, 1.0), (m - 1, m - 2, -1.0)):
+        for k, nb, sign, e in ((0, 1, 1.0, 0), (m - 1, m - 2, -1.0, m - 2)):
             c = sign * cq[k]
-            rate = dhe[k] * hd[k]
+            rate = dhe[k] * hd[k] * cl[e]
             rows += [[k], [k], [k]]
             cols += [[ur[k]], [uz[nb]], [uz[k]]]
             side = 1.0 if nb > k else -1.0
@@ -241,7 +248,7 @@ class SealFilmTerm(ChainFilm):
         ga = np.where(a == 0, 1.0, 1.0 - beta) * cg[a]
         gb = np.where(b == m - 1, 1.0, beta) * cg[b]
         for col, d in zip((ur[a], ur[b], uz[a], uz[b]),
-                          (-shift / L, shift / L, dd / L, -dd / L)):
+                          (-shift / L, shift / L, dd / L * cl, -dd / L * cl)):
             rows += [a, b]
             cols += [col, col]
             vals += [ga * d, gb * d]
@@ -277,15 +284,16 @@ class SealFilmTerm(ChainFilm):
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
         q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = self._fluxes(t, y, h, hd, p)
-        L = np.diff(y)
-        dqL = (p[1:] - p[:-1]) * dqa / L                 # dq/dL = dp / (L^2 I1)
+        L, c = element_lengths(y)
+        dqL = (p[1:] - p[:-1]) * dqa / L * c             # dq/dy_b = dp / (L^2 I1) dL/dy_b
         d = np.stack([dqa, dqb, dha, dhb, -dqL, dqL], 1)  # per element, columns as the pattern
         ev = np.stack([d, -d], 1).ravel()[self._ekeep]
         i = np.arange(1, self.side.m - 1)
-        M = 0.5 * (y[i + 1] - y[i - 1])
+        M = 0.5 * (L[i - 1] + L[i])
         rate = ds_dhd[i] / M * hd[i]                     # h_eff'(h_i) dh_i/dt = dS_i/dM_i
         shift_hd = shift if (self.squeeze and udot is not None) else 0.0
-        sv = np.concatenate([ds_dh[i] + shift_hd * ds_dhd[i], 0.5 * rate, -0.5 * rate])
+        sv = np.concatenate([ds_dh[i] + shift_hd * ds_dhd[i], 0.5 * rate * c[i],
+                             -0.5 * rate * c[i - 1], 0.5 * rate * (c[i - 1] - c[i])])
         film = np.concatenate([ev, sv]) * self.row_scale[self._rows_film]
         A = self.side.area
         Li = self.lengths(y)
@@ -341,10 +349,10 @@ class LeakageTerm(Term):
         shift_hd = shift if (f.squeeze and udot is not None) else 0.0
         out = []
         for e, node, sgn in ((0, 0, 1.0), (-1, -1, -1.0)):
-            L = y[e] - y[e - 1] if e == -1 else y[1] - y[0]
-            dqL = (p[1] - p[0] if e == 0 else p[-1] - p[-2]) * dqa[e] / L
+            L, c = element_length(y[e] - y[e - 1] if e == -1 else y[1] - y[0])
+            dqL = (p[1] - p[0] if e == 0 else p[-1] - p[-2]) * dqa[e] / L * c
             M = 0.5 * L
-            rate = s[node] / M                              # dS/dM
+            rate = s[node] / M * c                          # dS/dM dM/dy_b
             d = np.array([dqa[e], dqb[e], dha[e], dhb[e], -dqL, dqL])
             ds = ds_dh[node] + shift_hd * ds_dhd[node]
             k = 2 if node == 0 else 3                       # u_r of the end node
