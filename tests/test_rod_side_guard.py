@@ -57,6 +57,19 @@ def test_nodes_pressed_into_a_wall_out_of_order_are_not_a_fold():
         guard.accepted(0.0, u)                          # ... 6 um behind it: a fold
 
 
+def test_the_extrusion_guard_sees_a_tongue_whatever_its_direction():
+    """A tongue's return edge, turned back by 6 um but still steep (along r), is no fold for
+    the rod-side guard and one for the extrusion guard (fold with back=None), which looks
+    past a wall's plane, where no wall holds the rubber (6.5 MPa into a 0.1 mm gap on the
+    0.05 mm mesh, benchmarks/stress.md)."""
+    from sealts.contact.rod_side_guard import fold
+    side, u = chain()
+    u[side.ur[4]] = 0.02                                # node 4 lifted 20 um off the rod ...
+    u[side.uz[4]] = -0.05 - 6e-3                        # ... and 6 um behind node 3
+    assert fold(side, u) == -1
+    assert fold(side, u, back=None) == 3
+
+
 def test_a_node_off_the_rod_side_inside_the_rod_stops_the_run():
     side, u = chain()
     u[2 * 6] = -0.501 - 1e-3                           # the off node to r = 0.999 - 1e-3

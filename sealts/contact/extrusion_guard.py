@@ -11,7 +11,9 @@ says where. A term without rows: its post-step hook checks every accepted state.
 
 Extrusion starts with a tongue: the seal's surface runs along the rod into the gap and back
 along the bore, so the rod side's chain turns over past the wall's plane
-(:func:`sealts.contact.rod_side_guard.fold`). The film and the rod contact live on that
+(:func:`sealts.contact.rod_side_guard.fold`, whatever the turned element's direction: past
+the wall's plane no wall holds the rubber, so a reversal there is the tongue, not the
+wall penalty's compliance). The film and the rod contact live on that
 chain ordered along the rod and cannot follow it, so the run stops there too, as the
 onset of extrusion (the rod-side guard would call it a fold). This guard runs before the
 rod-side guard.
@@ -51,7 +53,7 @@ class ExtrusionGuard(Term):
             raise SolveError(f"extrusion: at t = {t:.6g}{at} node {node} has flowed "
                              f"{e:.3g} mm past the groove's side wall into the extrusion gap "
                              f"{gap}; groove.extrusion_limit = {self.limit:g} mm")
-        k = fold(self.side, u)
+        k = fold(self.side, u, back=None)
         if k >= 0 and self._past_wall(t, u, k):
             y = self.side.y(u)
             raise SolveError(f"extrusion: at t = {t:.6g}{at} the seal flows into the "

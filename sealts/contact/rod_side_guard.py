@@ -26,16 +26,18 @@ FOLD = 0.1      # an element inverted by a tenth of its reference length ...
 BACK = 0.5      # ... and pointing backwards along the rod (within 60 degrees of it)
 
 
-def fold(side, u):
+def fold(side, u, back=BACK):
     """The rod-side element most turned over (module docstring: its current axial length
-    against the reference order below -FOLD of its reference length and below -BACK of its
-    current length), by its first chain index; -1 if none is."""
+    against the reference order below -FOLD of its reference length and below -``back`` of
+    its current length; ``back`` None: whatever its direction), by its first chain index;
+    -1 if none is."""
     dz = np.diff(side.Z)
     if dz.size == 0:
         return -1
     order = np.sign(np.median(dz))
     dy = order * np.diff(side.y(u))
-    back = dy < -BACK * np.hypot(dy, np.diff(side.r(u)))
+    back = (dy < -back * np.hypot(dy, np.diff(side.r(u))) if back is not None
+            else np.ones(dy.size, bool))
     ratio = np.where(back, dy / np.abs(np.where(dz != 0.0, dz, np.inf)), np.inf)
     k = int(np.argmin(ratio))
     return k if ratio[k] < -FOLD else -1
