@@ -73,6 +73,10 @@ def test_a_crawl_stops_the_run_and_says_at_what_pace():
     need = float(msg.split("would take ")[1].split(" more steps")[0])
     assert need > PACE_LIMIT
     assert "the fastest change: unknown" in msg
+    # and names the oscillation that keeps the steps small: its period is 2 pi / w
+    assert "; it oscillates: unknown " in msg and "swings between -1 and 1" in msg
+    period = float(msg.split("with a period of ")[1].split(" s")[0])
+    assert period == pytest.approx(2 * np.pi / 1e5, rel=1e-2)
     q = Problem(2, [FastOscillator(1e2)])
     q.stop_at_min_step = True
     u = q.transient(np.array([1.0, 0.0]), 0.0, 1.0, 1e-4, rtol=1e-6, atol=1e-9)

@@ -57,6 +57,10 @@ SOLVERS = {}
 # million
 PACE_WINDOW = 2000
 PACE_LIMIT = 1e5
+# the accepted states a crawl's stop looks back over for an oscillation
+# (Problem._oscillation): the last OSC_WINDOW, and OSC_WINDOW more spread over the pace
+# window (every tenth), in single precision
+OSC_WINDOW = 200
 
 
 def _solver_in_force(snes, ts=None):
@@ -572,7 +576,47 @@ class Problem:
         raise StepTooSmall(f"the time steps crawl: the last {PACE_WINDOW} advanced t by "
                            f"{span:.3g} s (to t = {t:.6g} s), and at that pace the "
                            f"remaining {t_end - t:.4g} s would take {need:.2g} more steps"
-                           f"{self._fastest_change(u, rtol, atol)}", t=t)
+                           f"{self._fastest_change(u, rtol, atol)}"
+                           f"{self._oscillation(rtol, atol)}", t=t)
+
+    def _oscillation(self, rtol, atol):
+        """"; it oscillates: ..." when the unknown that swung most against its error
+        tolerance over the last OSC_WINDOW accepted states (else over OSC_WINDOW states
+        spread over the pace window: a period of more than a third of the first window is
+        sampled at least six times there) rose through the upper quarter of its swing from
+        below its lower quarter at least three times (a trigger with hysteresis, so
+        round-off wiggles do not count): its range and its period, the mean time between
+        those rises. "" otherwise."""
+        for states in (self._recent, self._spread):
+            found = self._oscillation_in(states, rtol, atol)
+            if found:
+                return found
+        return ""
+
+    def _oscillation_in(self, states, rtol, atol):
+        if len(states) < 10:
+            return ""
+        t = np.array([s[0] for s in states])
+        U = np.array([s[1] for s in states], float)
+        scale = np.asarray(atol, float) + np.asarray(rtol, float) * np.abs(U).max(0)
+        swing = (U.max(0) - U.min(0)) / np.where(scale > 0, scale, np.inf)
+        i = int(np.argmax(swing))
+        x = U[:, i]
+        lo, hi = np.quantile([x.min(), x.max()], [0.25, 0.75])
+        rises, below = [], False
+        for tk, xk in zip(t, x):
+            if xk < lo:
+                below = True
+            elif xk > hi and below:
+                rises.append(tk)
+                below = False
+        if len(rises) < 3:
+            return ""
+        period = (rises[-1] - rises[0]) / (len(rises) - 1)
+        what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
+        return (f"; it oscillates: {what} swings between {x.min():.4g} and {x.max():.4g} "
+                f"with a period of {period:.3g} s ({len(rises)} rises since t = "
+                f"{t[0]:.6g} s)")
 
     def _check_min_step(self, t_prev, t, u, rtol, atol):
         """TSAdapt accepts a step at its minimum size whatever its error (PETSc's basic
@@ -643,6 +687,9 @@ class Problem:
         self._nonfinite_at = None
         self._offset = (0, 0)
         self._pace = deque(maxlen=PACE_WINDOW + 1)    # the last accepted steps' t
+        # and their (t, u), for _oscillation: the last ones and every tenth
+        self._recent = deque(maxlen=OSC_WINDOW)
+        self._spread = deque(maxlen=OSC_WINDOW)
         if resume is not None:
             with_history = self.history_terms()
             for k, history in resume["history"].items():
@@ -663,6 +710,9 @@ class Problem:
             try:
                 interrupt.check(self.comm)   # between steps, before anything is written
                 u = self.gather(X).copy()
+                self._recent.append((t, u.astype(np.float32)))
+                if len(self._pace) % (PACE_WINDOW // OSC_WINDOW) == 0:
+                    self._spread.append(self._recent[-1])
                 if t_prev is not None and t not in targets:
                     self._check_min_step(t_prev, t, u, rtol, atol)
                 if t_prev is not None:
