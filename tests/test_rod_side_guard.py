@@ -57,6 +57,22 @@ def test_nodes_pressed_into_a_wall_out_of_order_are_not_a_fold():
         guard.accepted(0.0, u)                          # ... 6 um behind it: a fold
 
 
+def test_a_crumpled_element_pressed_into_a_wall_is_no_fold():
+    """Up the wall the surface crumpled: an element 6 um long radially, its nodes 1 and 8 um
+    into the wall (z = 0.2), so it points backwards at 50 degrees: a fold by its direction,
+    but with the guard knowing the walls, both nodes pressed into the same one, none."""
+    side, u = chain()
+    for k, (dr, depth) in enumerate(((0.05, 1e-3), (0.056, 8e-3), (0.10, 1e-3)), start=3):
+        u[side.ur[k]] = dr
+        u[side.uz[k]] = 0.2 + depth - side.Z[k]
+    u[side.uz[3]] -= 0.05                               # node 3 back on the rod
+    u[side.ur[3]] = 0.0
+    u[side.ur[5]] = u[side.ur[4]] + 0.006               # element 4-5: 6 um up, 7 um back
+    with pytest.raises(SolveError, match="folds over between nodes 4 and 5"):
+        RodSideGuard(side, depth=7e-4).accepted(0.0, u)
+    RodSideGuard(side, depth=7e-4, walls=lambda t: (-1.0, 0.2)).accepted(0.0, u)
+
+
 def test_the_extrusion_guard_sees_a_tongue_whatever_its_direction():
     """A tongue's return edge, turned back by 6 um but still steep (along r), is no fold for
     the rod-side guard and one for the extrusion guard (fold with back=None), which looks

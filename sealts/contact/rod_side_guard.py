@@ -15,8 +15,10 @@ run stops and says where. Where the rod side runs up a groove wall, its nodes ar
 into the wall by the wall's penalty (about 0.1 um per MPa) to depths that differ from node
 to node, so neighbours there swap their axial order by microns (4 um at 40 MPa, more than
 FOLD of a 0.025 mm element): their element runs along the wall, radially, and is not a fold
-(the film takes it as a short positive element, :mod:`sealts.film.reynolds_fv`). Nodes
-pressed flat against a wall sit at one axial position to round-off, far above that bound.
+(the film takes it as a short positive element, :mod:`sealts.film.reynolds_fv`); nor is an
+element both of whose nodes are pressed into the same wall, even where the surface there
+is crumpled so short that the penalty's microns tilt it backwards. Nodes pressed flat
+against a wall sit at one axial position to round-off, far above that bound.
 """
 import numpy as np
 
@@ -26,11 +28,11 @@ FOLD = 0.1      # an element inverted by a tenth of its reference length ...
 BACK = 0.5      # ... and pointing backwards along the rod (within 60 degrees of it)
 
 
-def fold(side, u, back=BACK):
+def fold(side, u, back=BACK, skip=None):
     """The rod-side element most turned over (module docstring: its current axial length
     against the reference order below -FOLD of its reference length and below -``back`` of
-    its current length; ``back`` None: whatever its direction), by its first chain index;
-    -1 if none is."""
+    its current length; ``back`` None: whatever its direction), by its first chain index,
+    but the elements where ``skip`` (a mask) is true; -1 if none is."""
     dz = np.diff(side.Z)
     if dz.size == 0:
         return -1
@@ -38,25 +40,39 @@ def fold(side, u, back=BACK):
     dy = order * np.diff(side.y(u))
     back = (dy < -back * np.hypot(dy, np.diff(side.r(u))) if back is not None
             else np.ones(dy.size, bool))
+    if skip is not None:
+        back &= ~np.asarray(skip, bool)
     ratio = np.where(back, dy / np.abs(np.where(dz != 0.0, dz, np.inf)), np.inf)
     k = int(np.argmin(ratio))
     return k if ratio[k] < -FOLD else -1
 
 
 class RodSideGuard(Term):
-    def __init__(self, side, depth, note=None):
+    def __init__(self, side, depth, note=None, walls=None):
         """``side``: the :class:`sealts.contact.rod_side.RodSide` (its ``off`` nodes, their
         dofs and the rod radius); ``depth``: how far (mm) a node may enter the rod;
-        ``note(u)``: more words for the message (e.g. the rolling angle), or None."""
-        self.side, self.depth, self.note = side, float(depth), note
+        ``note(u)``: more words for the message (e.g. the rolling angle), or None;
+        ``walls(t)``: the groove's side walls (z_a, z_b) (mm): an element both of whose
+        nodes are pressed into one of them is no fold, whatever its direction (their
+        order there is the wall penalty's), or None."""
+        self.side, self.depth, self.note, self.walls = side, float(depth), note, walls
 
     def accepted(self, t, u):
         self._check_fold(t, u)
         self._check_off(t, u)
 
+    def _pressed(self, t, u):
+        """Per element: both nodes pressed into the same side wall (None without walls)."""
+        if self.walls is None:
+            return None
+        za, zb = self.walls(t)
+        y = self.side.y(u)
+        a, b = y <= za, y >= zb
+        return (a[:-1] & a[1:]) | (b[:-1] & b[1:])
+
     def _check_fold(self, t, u):
         side = self.side
-        k = fold(side, u)
+        k = fold(side, u, skip=self._pressed(t, u))
         if k < 0:
             return
         y, h = side.y(u), side.gap(t, u) * 1e3

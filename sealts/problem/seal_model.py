@@ -126,12 +126,14 @@ class SealModel:
                                          self.axisym, udofs=self.udofs, heating=s.heating)
         return self._full_solid
 
-    def rod_side_guard(self, side=None):
+    def rod_side_guard(self, side=None, groove=None):
         """The post-step guard of :mod:`sealts.contact.rod_side_guard` for this seal: the
         boundary nodes off the rod side may not pass into the rod by more than the asperity
         law's contact gap (h_mix of Eq. 44). ``side``: another layout's rod side (the
-        stroke's, the hold's; default the model's, its rod moving in steps 1-2)."""
+        stroke's, the hold's; default the model's, its rod moving in steps 1-2); ``groove``:
+        the walls the rod side may be pressed into (default the model's)."""
         side = self.side if side is None else side
+        groove = self.groove if groove is None else groove
 
         def note(u):
             if self.axisym:
@@ -142,15 +144,15 @@ class SealModel:
             return (f"; the plane-strain section has rolled by {roll:.3g} degrees (without "
                     "hoop strain only friction holds a round section from rolling)")
 
-        return RodSideGuard(side, self.law.contact_gap, note)
+        return RodSideGuard(side, self.law.contact_gap, note, walls=groove.z_walls)
 
     def guards(self, side=None, groove=None, pressure=None):
         """The post-step guards of a run on this seal: with an extrusion gap the extrusion
         guard (:mod:`sealts.contact.extrusion_guard`) on ``groove`` (default the model's;
         ``pressure(t)`` the sealed pressure its message names), then the rod-side guard
         (:meth:`rod_side_guard`)."""
-        guard = self.rod_side_guard(side)
         groove = self.groove if groove is None else groove
+        guard = self.rod_side_guard(side, groove)
         if groove.edge is None:
             return [guard]
         return [ExtrusionGuard(groove, self.extrusion_limit, guard.side, pressure), guard]
