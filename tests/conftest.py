@@ -78,6 +78,24 @@ def _section(lines, name):
             yield line
 
 
+def assert_jacobian_matches(pairs, J0, blocks, tol=1e-6):
+    """Each (J, fd) of ``pairs`` (an assembled Jacobian and its central differences) agree
+    over the dofs of ``blocks`` (name -> dofs) to ``tol`` of each row's largest entry (rows
+    of tiny entries against 1e-8 of that row of J0), and within each block pair to ``tol``
+    of the block's largest entry."""
+    import numpy as np
+    dofs = np.concatenate(list(blocks.values()))
+    for J, fd in pairs:
+        a, b = J[np.ix_(dofs, dofs)], fd[np.ix_(dofs, dofs)]
+        scale = np.maximum(np.abs(a).max(1), 1e-8 * np.abs(J0[dofs]).max(1))
+        err = np.abs(a - b).max(1) / scale
+        assert err.max() <= tol, (dofs[err.argmax()], err.max())
+        for rows in blocks.values():
+            for cols in blocks.values():
+                a, b = J[np.ix_(rows, cols)], fd[np.ix_(rows, cols)]
+                assert np.abs(a - b).max() <= tol * max(np.abs(a).max(), np.abs(b).max())
+
+
 def central_differences(problem, t, u, ud, blocks, eps, n):
     """dF/dU and dF/dU' of ``problem``'s residual (n x n) by central differences in the
     columns of ``blocks`` (name -> dofs), with the step ``eps[name]`` in U and 1e-2 in U'
