@@ -15,7 +15,7 @@ import numpy as np
 
 from ..core import Term, of_time
 from .flow_factors import FlowFactors
-from .reynolds_fv import element_lengths
+from .reynolds_fv import control_volumes
 
 
 class ChainFilm(Term):
@@ -87,11 +87,7 @@ class ChainFilm(Term):
         h = s.gap(t, u)
         he = h if f <= 0.0 else np.where(h >= 2.0 * f, h,
                                          f * (1.0 + np.exp(np.minimum(h / f - 2.0, 0.0))))
-        half = 0.5 * element_lengths(s.y(u))[0]
-        M = np.zeros(s.m)
-        M[:-1] += half
-        M[1:] += half
-        return float(s.area * M @ he)
+        return float(s.area * control_volumes(s.y(u)) @ he)
 
     def pressure(self, u):
         """The film pressures in chain order (MPa)."""

@@ -163,9 +163,9 @@ def storage(y, h, hd, h_floor):
 
 
 def control_volumes(y):
-    """Lumped control-volume lengths M_i (mm)."""
+    """Lumped control-volume lengths M_i (mm): half the adjacent element lengths."""
     m = np.zeros_like(y)
-    d = 0.5 * np.diff(y)
+    d = 0.5 * element_lengths(y)[0]
     m[:-1] += d
     m[1:] += d
     return m
