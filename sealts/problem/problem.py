@@ -518,6 +518,10 @@ class Problem:
         opts = PETSc.Options(self.prefix or None)
         return opts.getReal(name, default) if opts.hasName(name) else default
 
+    def _unknown(self, i):
+        """Serial unknown i in words (the numbering's, else "unknown i")."""
+        return self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
+
     def _fastest_change(self, u, rtol, atol):
         """"; the fastest change: <unknown>" since the last accepted state ("" without)."""
         u_prev = self._last_u[0]
@@ -526,8 +530,7 @@ class Problem:
         scale = np.asarray(atol, float) + np.asarray(rtol, float) * np.abs(u)
         change = np.abs(u - u_prev) / np.where(scale > 0, scale, np.inf)
         i = int(np.argmax(change))
-        what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
-        return f"; the fastest change: {what}"
+        return f"; the fastest change: {self._unknown(i)}"
 
     def _nonfinite(self, ts):
         """Where TS's last Newton solve failed on a non-finite residual: the first term whose
@@ -551,8 +554,7 @@ class Problem:
                 what = term.nonfinite(t, u)
                 if what is None:
                     i = int(bad[0]) if self._replicated else int(self.dofs.serial[bad[0]])
-                    what = "not finite at the " + (self.dofs.describe(i) if hasattr(
-                        self.dofs, "describe") else f"unknown {i}")
+                    what = "not finite at the " + self._unknown(i)
                 return f": the residual at t = {t:.6g} s, {type(term).__name__}: {what}"
         return ""
 
@@ -602,7 +604,7 @@ class Problem:
         swing = (U.max(0) - U.min(0)) / np.where(scale > 0, scale, np.inf)
         i = int(np.argmax(swing))
         x = U[:, i]
-        lo, hi = np.quantile([x.min(), x.max()], [0.25, 0.75])
+        lo, hi = x.min() + np.array([0.25, 0.75]) * (x.max() - x.min())
         rises, below = [], False
         for tk, xk in zip(t, x):
             if xk < lo:
@@ -613,9 +615,8 @@ class Problem:
         if len(rises) < 3:
             return ""
         period = (rises[-1] - rises[0]) / (len(rises) - 1)
-        what = self.dofs.describe(i) if hasattr(self.dofs, "describe") else f"unknown {i}"
-        return (f"; it oscillates: {what} swings between {x.min():.4g} and {x.max():.4g} "
-                f"with a period of {period:.3g} s ({len(rises)} rises since t = "
+        return (f"; it oscillates: {self._unknown(i)} swings between {x.min():.4g} and "
+                f"{x.max():.4g} with a period of {period:.3g} s ({len(rises)} rises since t = "
                 f"{t[0]:.6g} s)")
 
     def _check_min_step(self, t_prev, t, u, rtol, atol):
