@@ -50,6 +50,13 @@ from ..core import Counters, SolveError, StepInfo, StepTooSmall
 
 # the solvers in force, by options prefix, as set up last in this process (for the summary)
 SOLVERS = {}
+# the default serial direct solver: PETSc's own LU with AMD ordering below this many
+# unknowns, UMFPACK from there on (scripts/bench_lu.py --stroke-meshes; README, "Direct
+# solver"). PETSc's LU does not pivot: a factorisation that meets a zero pivot switches the
+# problem to UMFPACK for good (Problem._fall_back_to_umfpack) and the solve is retried
+PETSC_LU_BELOW = 8000
+_ZERO_PIVOT = (PETSc.PC.FailedReason.FACTOR_NUMERIC_ZEROPIVOT,
+               PETSc.PC.FailedReason.FACTOR_STRUCT_ZEROPIVOT)
 # a crawl (Problem._check_pace): the last PACE_WINDOW accepted steps' pace would need more
 # than PACE_LIMIT further steps to the end. The paper's cycles take 1,000-8,000 steps in
 # all, and no window of the stress matrix's finished cases projects more than a few
@@ -115,6 +122,10 @@ class Problem:
         self.prefix = prefix
         self.fields = dict(fields or {})
         self.counters = Counters()
+        # PETSc's LU by default and not by choice: it may give way to UMFPACK
+        self._lu_may_fall_back = False
+        # (time, what) of that switch, if it happened
+        self.lu_fallback = None
         self._set_defaults = []       # options set by _default_option, dropped after use
         self._callback_error = None   # a term's exception in a callback (_guarded)
         # more TS defaults of this problem (option name without prefix -> value); the
@@ -308,9 +319,41 @@ class Problem:
         pc = ksp.getPC()
         if self.comm.getSize() == 1:
             pc.setType(PETSc.PC.Type.LU)
-            pc.setFactorSolverType("umfpack")  # 2x PETSc's LU at 80k unknowns, docs/petsc-build.md
+            if self.n < PETSC_LU_BELOW and self.lu_fallback is None:
+                pc.setFactorSolverType("petsc")
+                pc.setFactorOrdering(PETSc.Mat.OrderingType.AMD)
+            else:
+                pc.setFactorSolverType("umfpack")
         else:
             pc.setType(PETSc.PC.Type.REDUNDANT)
+
+    def _arm_lu_fallback(self, snes):
+        """After setFromOptions: PETSc's LU in force by default (not chosen on the command
+        line or in the scene's [petsc] table) may give way to UMFPACK."""
+        pc = snes.getKSP().getPC()
+        chosen = PETSc.Options(self.prefix).hasName("pc_factor_mat_solver_type")
+        self._lu_may_fall_back = (pc.getType() == PETSc.PC.Type.LU and not chosen
+                                  and pc.getFactorSolverType() == "petsc")
+
+    def _fall_back_to_umfpack(self, snes, t):
+        """If the last linear solve of ``snes`` failed on a zero pivot of PETSc's default
+        LU (it does not pivot), switch its factorisation to UMFPACK (which does) for the
+        rest of this problem's solves; True if it did."""
+        ksp = snes.getKSP()
+        pc = ksp.getPC()
+        if (not self._lu_may_fall_back
+                or ksp.getConvergedReason() != PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED
+                or pc.getFailedReason() not in _ZERO_PIVOT):
+            return False
+        pc.reset()                    # the factor goes; SNES sets the operators again
+        pc.setFactorSolverType("umfpack")
+        self._lu_may_fall_back = False
+        self.lu_fallback = (float(t), "a zero pivot of PETSc's LU")
+        solvers = SOLVERS.get(self.prefix or "")
+        if solvers is not None:
+            solvers["pc_factor_mat_solver_type"] = (
+                f"umfpack (from t = {float(t):.6g}: a zero pivot of PETSc's LU)")
+        return True
 
     def _default_schur(self, ksp):
         """Prony internal variables first, displacements second: their own block A00 is
@@ -377,6 +420,7 @@ class Problem:
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
         self._set_splits(snes.getKSP())
+        self._arm_lu_fallback(snes)
         SOLVERS[self.prefix or ""] = _solver_in_force(snes)
         return snes
 
@@ -421,6 +465,12 @@ class Problem:
             from .newton_test import UpdateTest
             ts.getSNES().setConvergenceTest(UpdateTest(ts, self.update_test))
         self._set_splits(ts.getSNES().getKSP())
+        self._arm_lu_fallback(ts.getSNES())
+        if self._lu_may_fall_back:
+            # before each Newton iteration: a step whose factorisation met a zero pivot
+            # failed, and TS retries it (smaller) with UMFPACK
+            ts.getSNES().setUpdate(lambda snes, its: self._fall_back_to_umfpack(
+                snes, ts.getTime()))
         SOLVERS[self.prefix or ""] = _solver_in_force(ts.getSNES(), ts)
         return ts
 
@@ -488,17 +538,22 @@ class Problem:
     def solve_steady(self, u0, t=0.0):
         """Solve F(t, U, 0) = 0 from the initial guess u0; return the full solution."""
         self.t_steady = t
-        snes = self.make_snes()
-        X = self._owned(u0)
-        try:
-            snes.solve(None, X)
-        except PETSc.Error:
-            interrupt.check()         # a signal that ended the solve from inside a callback
-            err = self._callback_failure()
-            if err is not None:
-                raise err from None
-            raise
-        interrupt.check(self.comm)
+        for attempt in range(2):
+            snes = self.make_snes()
+            X = self._owned(u0)
+            try:
+                snes.solve(None, X)
+            except PETSc.Error:
+                interrupt.check()     # a signal that ended the solve from inside a callback
+                err = self._callback_failure()
+                if err is not None:
+                    raise err from None
+                raise
+            interrupt.check(self.comm)
+            if attempt or not self._fall_back_to_umfpack(snes, t):
+                break
+            self.counters.newton += snes.getIterationNumber()
+            snes.destroy()            # again from u0, with UMFPACK (_default_linear_solver)
         reason = snes.getConvergedReason()
         self.counters.newton += snes.getIterationNumber()
         self.counters.linear += snes.getLinearSolveIterations()
