@@ -47,6 +47,31 @@ def test_an_event_is_located_and_changes_the_problem():
     assert y[0] == pytest.approx(3.0 - 2.5 * np.exp(-(3.0 - np.log(2.0))), rel=1e-5)
 
 
+class Jump(Relax):
+    """Relax, but its indicator jumps through zero (from -1 to +1 where y passes 1/2), as
+    a front's target that jumps by many edges: TS can only bisect the bracket."""
+
+    def event_values(self, t, u):
+        return [1.0 if u[0] > 0.5 else -1.0]
+
+
+def test_an_indicator_that_jumps_is_located_without_a_stall():
+    """The bisection stops at a bracket of EVENT_DT_MIN of the span, far above TSAdapt's
+    smallest step: with PETSc's own floor the steps fell below that step twice in a row,
+    which the run took for a stuck controller and stopped (StepTooSmall)."""
+    from sealts.problem.problem import EVENT_DT_MIN
+    term = Jump()
+    p = Problem(1, [term])
+    p.stop_at_min_step = True
+    y = p.transient(np.zeros(1), 0.0, 3.0, 1e-3, rtol=1e-8, atol=1e-10)
+    (t_e, y_e, which), = term.fired
+    assert which == [0]
+    # located to the bracket: y' = 1/2 there, so y within a few brackets' change of 1/2
+    assert abs(y_e - 0.5) < 10 * 0.5 * EVENT_DT_MIN * 3.0
+    assert t_e == pytest.approx(np.log(2.0), abs=1e-5)
+    assert y[0] == pytest.approx(3.0 - 2.5 * np.exp(-(3.0 - np.log(2.0))), rel=1e-5)
+
+
 class FakeLoad:
     """A load whose fronts' targets the test sets (target_reach ignores the state)."""
 

@@ -68,6 +68,12 @@ PACE_LIMIT = 1e5
 # (Problem._oscillation): the last OSC_WINDOW, and OSC_WINDOW more spread over the pace
 # window (every tenth), in single precision
 OSC_WINDOW = 200
+# TS locates an event to a bracket of this fraction of the run's span (-ts_event_dt_min).
+# An indicator that jumps through zero (a front whose target jumps by edges) is bisected
+# down to it; PETSc's own floor lies below the smallest step TSAdapt may take, and two
+# such steps in a row looked like a stuck controller (_check_min_step) and stopped the
+# default cycle at its reversal as a "snap"
+EVENT_DT_MIN = 1e-9
 
 
 def _solver_in_force(snes, ts=None):
@@ -509,8 +515,13 @@ class Problem:
             self._set_from_events(X, before, u)
             ts.restartStep()
 
-        ts.setEventHandler([d for x in terms for d in x.event_directions],
-                           [False] * int(ends[-1]), indicator, post)
+        span = max(float(ts.getMaxTime() - ts.getTime()), 1e-300)
+        self._default_option("ts_event_dt_min", repr(EVENT_DT_MIN * span))
+        try:        # TSSetEventHandler reads the event options
+            ts.setEventHandler([d for x in terms for d in x.event_directions],
+                               [False] * int(ends[-1]), indicator, post)
+        finally:
+            self._drop_defaults()
 
     def _set_from_events(self, X, before, u):
         """Write the unknowns that events set in u (full, serial) into X. The ranks' terms
