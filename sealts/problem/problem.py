@@ -68,7 +68,7 @@ PACE_LIMIT = 1e5
 # (Problem._oscillation): the last OSC_WINDOW, and OSC_WINDOW more spread over the pace
 # window (every tenth), in single precision
 OSC_WINDOW = 200
-# TS locates an event to a bracket of this fraction of the run's span (-ts_event_dt_min).
+# TS locates an event to a bracket of this fraction of the run's end time (-ts_event_dt_min).
 # An indicator that jumps through zero (a front whose target jumps by edges) is bisected
 # down to it; PETSc's own floor lies below the smallest step TSAdapt may take, and two
 # such steps in a row looked like a stuck controller (_check_min_step) and stopped the
@@ -515,7 +515,10 @@ class Problem:
             self._set_from_events(X, before, u)
             ts.restartStep()
 
-        span = max(float(ts.getMaxTime() - ts.getTime()), 1e-300)
+        # of the run's end time (its span from 0): a run resumed from a checkpoint
+        # locates its events as the uninterrupted run does
+        t0, t1 = float(ts.getTime()), float(ts.getMaxTime())
+        span = max(abs(t1), abs(t1 - t0), 1e-300)
         self._default_option("ts_event_dt_min", repr(EVENT_DT_MIN * span))
         try:        # TSSetEventHandler reads the event options
             ts.setEventHandler([d for x in terms for d in x.event_directions],
