@@ -4,13 +4,17 @@ orderings) against UMFPACK, KLU and SuperLU.
 The matrices: the 2D plane-strain stiffness of a structured Q1 mesh with nu = 0.49, clamped
 at one edge (5k to 80k unknowns), like the seal's displacement block; with ``--stroke``
 also the default cycle's coupled stroke Jacobian at the stroke's start (seal, film, leakage
-and friction, 2,822 unknowns; mounts and pressurises first, about 20 s). For each solver it
+and friction; mounts and pressurises first, about 20 s), and with ``--stroke-meshes`` that
+Jacobian on four meshes (0.025 / 0.2 to the paper's 0.01 / 0.05 mm, 3.5k to 30k unknowns;
+steps 1-2 from the state cache where an earlier run left them): the measurements behind
+PETSC_LU_BELOW in sealts/problem/problem.py (PETSc's LU with AMD against UMFPACK). For each solver it
 times the first set-up (symbolic + numeric factorisation and one solve) and a
 refactorisation (numeric factorisation and one solve with the pattern kept: what every
 Newton iteration of a run pays), best of ``--repeat``, and prints markdown tables
 (docs/petsc-build.md keeps the last ones). Run:
 
     .venv/bin/python scripts/bench_lu.py [--sizes 50 100 200] [--repeat 3] [--stroke]
+                                         [--stroke-meshes]
 """
 import argparse
 import time
@@ -87,16 +91,28 @@ def time_solver(A, b, solver, ordering, repeat):
     return first, refactor, res
 
 
-def stroke_jacobian():
+# (contact, bulk) element sizes of --stroke-meshes, mm
+STROKE_MESHES = [(0.025, 0.2), (0.0125, 0.2), (0.0125, 0.1), (0.01, 0.05)]
+
+
+def stroke_jacobian(mesh=None):
     """The default cycle's stroke Jacobian at the stroke's start (TS shift of a 1e-4 s
-    backward-Euler step)."""
+    backward-Euler step); ``mesh``: (contact, bulk) element sizes in place of the scene's,
+    steps 1-2 then from the state cache if an earlier run left them."""
     import sys
     from pathlib import Path
     root = Path(__file__).resolve().parents[1]
     sys.path[:0] = [str(root), str(root / "tests")]
     from conftest import scene, stroke_of
     from sealts.steps import prepare
-    step = stroke_of(prepare(scene("oring_stroke", output={"progress": False})))
+    from sealts.steps.procedure import new_state, run_steps, steps_1_2
+    from sealts.steps.state_cache import StateCache
+    if mesh is None:
+        state = prepare(scene("oring_stroke", output={"progress": False}))
+    else:
+        s = scene("oring_stroke", mesh={"h_contact": mesh[0], "h_bulk": mesh[1]})
+        state = run_steps(steps_1_2(s, StateCache.for_scene(s, {}, "run")), new_state(s))
+    step = stroke_of(state)
     pb = step.problem
     X = pb._owned(step.start())
     Xd = X.duplicate()
@@ -127,8 +143,14 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--stroke", action="store_true",
                     help="also the default cycle's stroke Jacobian (mounts first)")
+    ap.add_argument("--stroke-meshes", action="store_true",
+                    help="also the stroke Jacobian on the meshes " + ", ".join(
+                        f"{c:g} / {b:g}" for c, b in STROKE_MESHES) + " mm")
     args = ap.parse_args()
     matrices = [("stroke Jacobian", stroke_jacobian())] if args.stroke else []
+    if args.stroke_meshes:
+        matrices += [(f"stroke Jacobian, {c:g} / {b:g} mm", stroke_jacobian((c, b)))
+                     for c, b in STROKE_MESHES]
     for nx in args.sizes:
         n, rows, cols, vals = q1_plane_strain(nx)
         A = PETSc.Mat().createAIJ((n, n), comm=PETSc.COMM_SELF)
