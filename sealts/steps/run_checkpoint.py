@@ -200,6 +200,7 @@ class StepCheckpoint(Observer):
             steering=self.steering, run_before=self.run_before,
             run_t=snap["t"], run_dt=snap["dt"], run_last_dt=snap["last_dt"],
             run_step=snap["step"], run_newton=snap["newton"],
+            run_lu_fallback=snap["lu_fallback"],
             run_counters=json.dumps(snap["counters"]),
             run_series=json.dumps(list(rows[0])),
             run_profiles=json.dumps([[t_, list(p)] for t_, p, _ in profiles]),
@@ -231,6 +232,8 @@ class Resumed:
             self.snapshot = {"t": float(a["run_t"]), "dt": float(a["run_dt"]),
                              "last_dt": float(a["run_last_dt"]),
                              "step": int(a["run_step"]), "newton": int(a["run_newton"]),
+                             # a checkpoint from before the direct solver's fallback: none
+                             "lu_fallback": float(a.get("run_lu_fallback", -1.0)),
                              "counters": json.loads(a["run_counters"]),
                              "history": history}
             self.rows = _rows(f["run/series"], json.loads(a["run_series"]))
