@@ -4,7 +4,8 @@ against its closed form (issue 17).
 Every O-ring setting is one ``sealts run`` process, timed whole as a user meets it (numba's
 cache warm, the mesh cached, nothing of steps 1-2 reused), one after another, nothing else
 of sealts running beside. The defaults are ``configs/oring_stroke.toml`` (0.025 / 0.2 mm
-mesh, BDF 3, stroke rtol 1e-2, fv film, UMFPACK); each family changes one factor:
+mesh, BDF 3, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 8,000 unknowns and
+UMFPACK above, sealts/problem/problem.py); each family changes one factor:
 
 * ``rtol``: the stroke's TS tolerance (``-stroke_ts_rtol``) 1e-2, 1e-3, 1e-4;
 * ``mesh``: contact / bulk element size 0.1 / 0.4, 0.05 / 0.2, 0.025 / 0.2, 0.02 / 0.2,
@@ -16,8 +17,8 @@ mesh, BDF 3, stroke rtol 1e-2, fv film, UMFPACK); each family changes one factor
 * ``theta``: Crank-Nicolson (``-stroke_ts_type theta -stroke_ts_theta_theta 0.5
   -stroke_ts_theta_endpoint``);
 * ``film``: the paper's film scheme (``film.scheme = "paper"``);
-* ``lu``: PETSc's own LU with AMD in place of UMFPACK (``-pc_factor_mat_solver_type petsc
-  -pc_factor_mat_ordering_type amd`` for every solver);
+* ``lu``: UMFPACK in place of PETSc's own LU (``-pc_factor_mat_solver_type umfpack`` for
+  every solver; the default until 2026-12-04);
 * ``cache``: the default with the pressurised-state cache warm (sealts/steps/state_cache.py;
   every other row runs steps 1-2, ``[start] cache = false``);
 * ``before``: BDF 2 with stroke rtol 1e-3 (the defaults until 2026-12-03);
@@ -81,7 +82,7 @@ LIMIT = 900.0             # s, a run's time limit (SIGTERM: sealts writes its su
 # two minutes show it
 LIMITS = {"theta": 120.0}
 T_PROFILE = 2.5           # s, mid-outstroke (v = v_max)
-LU_PETSC = [f"-{p}pc_factor_mat_solver_type" for p in ("", "stroke_", "static_", "stroke_start_")]
+LU_UMFPACK = [f"-{p}pc_factor_mat_solver_type" for p in ("", "stroke_", "static_", "stroke_start_")]
 # every residual and Jacobian goes through SNES (TS's own events are nested inside these)
 EVENTS = {"MatLUFactorNum": "lu", "MatLUFactorSym": "lu", "MatSolve": "solve",
           "SNESFunctionEval": "residual", "SNESJacobianEval": "jacobian"}
@@ -128,9 +129,9 @@ def settings(quick):
                                             "-stroke_ts_theta_endpoint"])]
     out += [("film", "paper scheme", scene_text(film_scheme="paper"), [])]
     lu = []
-    for o in LU_PETSC:
-        lu += [o, "petsc", o.replace("solver_type", "ordering_type"), "amd"]
-    out += [("lu", "PETSc LU, AMD", d, lu)]
+    for o in LU_UMFPACK:
+        lu += [o, "umfpack"]
+    out += [("lu", "UMFPACK", d, lu)]
     out += [("before", "BDF 2, rtol 1e-3", d, ["-stroke_ts_bdf_order", "2",
                                                  "-stroke_ts_rtol", "0.001"])]
     cached = scene_text(state_cache=True).replace("[mesh]\n", '[mesh]\ncache = "{cache}"\n', 1)
@@ -306,7 +307,7 @@ def plot(rows, fit, path, when):
             fams.setdefault(r["family"], []).append(r)
     names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4", "mesh": "mesh (contact / bulk)",
              "bdf": "BDF order 1 / 2", "theta": "Crank-Nicolson", "film": "paper film scheme",
-             "lu": "PETSc LU (AMD)",
+             "lu": "UMFPACK for PETSc's LU",
              "targets": "paper mesh at the defaults (the reference's mesh: time error only)",
              "before": "BDF 2 and rtol 1e-3 (the defaults before)",
              "layer": "mesh with a 0.1 mm layer at h_contact",
