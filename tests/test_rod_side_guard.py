@@ -141,3 +141,25 @@ def test_a_seal_clear_of_the_rod_blows_by(tmp_path):
     assert summary["status"] == "failed"
     assert summary["error"].startswith("pressurise: SolveError: blow-by")
     assert summary["results"]["contact_force_total"] == 0.0      # the mount never touched
+
+
+@pytest.mark.parametrize("corner_radius", [0.0, 0.1])
+def test_a_sharp_cornered_ring_is_told_to_round_its_corners(corner_radius):
+    """The rectangular ring's side-face node next to a sharp corner set on the rod (the
+    stress matrix's sharp ring stops so at t = 6.6 s): the stop says the corners are sharp
+    and which key rounds them; a ring with rounded corners is not told so."""
+    from conftest import ROOT, scene
+    from sealts.problem.seal_model import model_from_scene
+    s = scene("rect_ring_mount", seal={"corner_radius": corner_radius},
+              mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(ROOT / "meshes")})
+    model = model_from_scene(s)
+    side = model.side
+    k = int(np.argmin(model.mesh.X[side.off, 0]))          # the off node nearest the rod
+    u = np.zeros(model.n)
+    r = model.mesh.X[side.off[k], 0]
+    u[model.udofs[side.off[k], 0]] = model.r_rod_final - 2e-3 - r     # 2 um into the rod
+    guard = model.rod_side_guard()
+    with pytest.raises(SolveError) as e:
+        guard.accepted(2.0, u)                   # pseudo-time 2: rod and groove final
+    assert f"node {side.off[k]} off the rod side is 2 um inside the rod" in str(e.value)
+    assert ("seal.corner_radius = 0.1 mm" in str(e.value)) == (corner_radius == 0.0)

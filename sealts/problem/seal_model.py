@@ -47,11 +47,13 @@ class SealModel:
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
                  law=None, penalty=1e4, stabilisation=1e-3, depth=1.0,
                  corner_radius=0.0, comm=None, hold_rolling=None, clearance=0.0,
-                 edge_radius=0.1, extrusion_limit=0.25):
+                 edge_radius=0.1, extrusion_limit=0.25, off_hint=""):
         from petsc4py import PETSc
 
         from ..solid.pressure import boundary_loop
         self.mesh, self.material, self.axisym = mesh, material, axisym
+        # what the rod-side guard adds when a node off the rod side enters the rod
+        self.off_hint = off_hint
         self.comm = comm = comm or PETSc.COMM_WORLD
         X = mesh.X
         root_nodes = np.union1d(mesh.boundary_nodes(), boundary_loop(mesh.conn).ravel())
@@ -137,12 +139,13 @@ class SealModel:
 
         def note(u):
             if self.axisym:
-                return ""
+                return self.off_hint
             u_ser = np.zeros(self.n)
             u_ser[self.udofs] = u[side.udofs]
             roll = np.degrees(self.roll.angle(u_ser))
             return (f"; the plane-strain section has rolled by {roll:.3g} degrees (without "
-                    "hoop strain only friction holds a round section from rolling)")
+                    "hoop strain only friction holds a round section from rolling)"
+                    + self.off_hint)
 
         return RodSideGuard(side, self.law.contact_gap, note, walls=groove.z_walls)
 
@@ -257,6 +260,13 @@ class SealModel:
         return out
 
 
+# the rod-side guard's hint for a rectangular ring with sharp corners, whose rod side ends
+# at the corner: a ring that tilts sets the next node of its side face on the rod
+SHARP_CORNERS = ("; the ring's corners are sharp (seal.corner_radius = 0), so its rod side "
+                 "ends at them: with seal.corner_radius = 0.1 mm (say) the rounded corners "
+                 "belong to the rod side and carry the film and the asperity contact")
+
+
 def model_from_scene(scene, comm=None):
     """Mesh (cached) and SealModel for a ``model = "seal"`` scene, distributed over comm
     (PETSc.COMM_WORLD by default)."""
@@ -283,7 +293,9 @@ def model_from_scene(scene, comm=None):
                      law=law_from_scene(scene.asperity, material), penalty=scene.mount.penalty,
                      stabilisation=scene.mount.stabilisation,
                      corner_radius=gr.corner_radius, comm=comm, clearance=gr.clearance,
-                     edge_radius=gr.edge_radius, extrusion_limit=gr.extrusion_limit)
+                     edge_radius=gr.edge_radius, extrusion_limit=gr.extrusion_limit,
+                     off_hint=SHARP_CORNERS if sl.shape == "rectangle"
+                     and sl.corner_radius == 0.0 else "")
 
 
 def _file_mesh(path, cache, r_rod, groove):
