@@ -76,6 +76,15 @@ OSC_WINDOW = 200
 EVENT_DT_MIN = 1e-9
 
 
+def _span(t0, t_end):
+    """The time scale of a run from t0 to t_end that TS's smallest step and the events'
+    bracket are fractions of: its end time (its span from 0), or its span where that is
+    longer. A run resumed from a checkpoint has the uninterrupted run's (with t_end - t0
+    alone the two-rank restart test failed)."""
+    t0, t_end = float(t0), float(t_end)
+    return max(abs(t_end), abs(t_end - t0), 1e-300)
+
+
 def _solver_in_force(snes, ts=None):
     """The types and tolerances a solver ended up with, after setFromOptions."""
     ksp = snes.getKSP()
@@ -466,8 +475,9 @@ class Problem:
         for name, value in self.ts_defaults.items():
             self._default_option(name, value)
         self._default_option("ts_adapt_type", "basic")  # petsc4py has no TSAdapt binding
-        # a run whose steps shrink below 1e-12 of its span fails instead of crawling on
-        self._default_option("ts_adapt_dt_min", repr(1e-12 * max(float(t_end - t0), 1e-300)))
+        # a run whose steps shrink below 1e-12 of its span (_span) fails instead of
+        # crawling on
+        self._default_option("ts_adapt_dt_min", repr(1e-12 * _span(t0, t_end)))
         snes = ts.getSNES()
         snes.setType(PETSc.SNES.Type.NEWTONLS)
         snes.getLineSearch().setType(self.linesearch)
@@ -527,10 +537,7 @@ class Problem:
             self._set_from_events(X, before, u)
             ts.restartStep()
 
-        # of the run's end time (its span from 0): a run resumed from a checkpoint
-        # locates its events as the uninterrupted run does
-        t0, t1 = float(ts.getTime()), float(ts.getMaxTime())
-        span = max(abs(t1), abs(t1 - t0), 1e-300)
+        span = _span(ts.getTime(), ts.getMaxTime())
         self._default_option("ts_event_dt_min", repr(EVENT_DT_MIN * span))
         try:        # TSSetEventHandler reads the event options
             ts.setEventHandler([d for x in terms for d in x.event_directions],
@@ -818,7 +825,7 @@ class Problem:
             SOLVERS[self.prefix or ""]["pc_factor_mat_solver_type"] = (
                 f"umfpack (from t = {self.lu_fallback[0]:.6g}: {self.lu_fallback[1]})")
         self._set_events(ts, raised)
-        self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * max(float(t_end - t0), 1e-300))
+        self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * _span(t0, t_end))
         self._last_u, self._last_dt = last_u, None
         if resume is not None:
             last_u[0] = np.array(u0, float)
