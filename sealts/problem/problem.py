@@ -139,7 +139,7 @@ class Problem:
         self.counters = Counters()
         # PETSc's LU by default and not by choice: it may give way to UMFPACK
         self._lu_may_fall_back = False
-        # (time, what) of that switch, if it happened
+        # the time of that switch, if it happened (a resumed run carries it on)
         self.lu_fallback = None
         self._set_defaults = []       # options set by _default_option, dropped after use
         self._callback_error = None   # a term's exception in a callback (_guarded)
@@ -353,6 +353,14 @@ class Problem:
         if lu and pc.getFactorSolverType() != "petsc":
             self._own_ordering(pc)
 
+    def _solvers_in_force(self, snes, ts=None):
+        """Record the solver this problem set up (SOLVERS, for the summary), with the time
+        UMFPACK took over from PETSc's LU if it did."""
+        SOLVERS[self.prefix or ""] = out = _solver_in_force(snes, ts)
+        if self.lu_fallback is not None:
+            out["pc_factor_mat_solver_type"] = (
+                f"umfpack (from t = {self.lu_fallback:.6g}: a zero pivot of PETSc's LU)")
+
     def _own_ordering(self, pc):
         """A factor package other than PETSc's orders the matrix itself (PETSc's
         'external'), unless an ordering was chosen: the AMD ordering set for PETSc's LU,
@@ -375,11 +383,8 @@ class Problem:
         pc.setFactorSolverType("umfpack")
         self._own_ordering(pc)
         self._lu_may_fall_back = False
-        self.lu_fallback = (float(t), "a zero pivot of PETSc's LU")
-        solvers = SOLVERS.get(self.prefix or "")
-        if solvers is not None:
-            solvers["pc_factor_mat_solver_type"] = (
-                f"umfpack (from t = {float(t):.6g}: a zero pivot of PETSc's LU)")
+        self.lu_fallback = float(t)
+        self._solvers_in_force(snes, getattr(self, "_ts", None))
         return True
 
     def _default_schur(self, ksp):
@@ -448,7 +453,7 @@ class Problem:
         snes.setFromOptions()
         self._set_splits(snes.getKSP())
         self._arm_lu_fallback(snes)
-        SOLVERS[self.prefix or ""] = _solver_in_force(snes)
+        self._solvers_in_force(snes)
         return snes
 
     def make_ts(self, t0, t_end, dt0, monitor=None, rtol=1e-6, atol=1e-8):
@@ -499,7 +504,7 @@ class Problem:
             # failed, and TS retries it (smaller) with UMFPACK
             ts.getSNES().setUpdate(lambda snes, its: self._fall_back_to_umfpack(
                 snes, ts.getTime()))
-        SOLVERS[self.prefix or ""] = _solver_in_force(ts.getSNES(), ts)
+        self._solvers_in_force(ts.getSNES(), ts)
         return ts
 
     def _set_events(self, ts, raised):
@@ -739,7 +744,7 @@ class Problem:
         return {"t": ts.getTime(), "dt": ts.getTimeStep(),
                 "last_dt": -1.0 if self._last_dt is None else self._last_dt,
                 # when PETSc's LU gave way to UMFPACK (-1: it did not)
-                "lu_fallback": -1.0 if self.lu_fallback is None else self.lu_fallback[0],
+                "lu_fallback": -1.0 if self.lu_fallback is None else self.lu_fallback,
                 "counters": asdict(c),
                 "step": ts.getStepNumber() + self._offset[0],
                 "newton": ts.getSNESIterations() + self._offset[1],
@@ -787,7 +792,7 @@ class Problem:
                 with_history[int(k)].restore(history)
             self.counters = Counters(**{k: int(v) for k, v in resume["counters"].items()})
             if resume.get("lu_fallback", -1.0) >= 0.0:     # on with UMFPACK, as that run
-                self.lu_fallback = (float(resume["lu_fallback"]), "a zero pivot of PETSc's LU")
+                self.lu_fallback = float(resume["lu_fallback"])
             self._offset = (int(resume["step"]), int(resume["newton"]))
             last[0] = float(t0)
 
@@ -821,9 +826,6 @@ class Problem:
                 raise
 
         ts = self.make_ts(t0, t_end, dt0, monitor=monitor, rtol=rtol, atol=atol)
-        if self.lu_fallback is not None and (self.prefix or "") in SOLVERS:
-            SOLVERS[self.prefix or ""]["pc_factor_mat_solver_type"] = (
-                f"umfpack (from t = {self.lu_fallback[0]:.6g}: {self.lu_fallback[1]})")
         self._set_events(ts, raised)
         self._dt_min = self._option_real("ts_adapt_dt_min", 1e-12 * _span(t0, t_end))
         self._last_u, self._last_dt = last_u, None
