@@ -307,7 +307,7 @@ def plot(rows, fit, path, when):
             fams.setdefault(r["family"], []).append(r)
     names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4", "mesh": "mesh (contact / bulk)",
              "bdf": "BDF order 1 / 2", "theta": "Crank-Nicolson", "film": "paper film scheme",
-             "lu": "UMFPACK for PETSc's LU",
+             "lu": "UMFPACK in place of PETSc's LU",
              "targets": "paper mesh at the defaults (the reference's mesh: time error only)",
              "before": "BDF 2 and rtol 1e-3 (the defaults before)",
              "layer": "mesh with a 0.1 mm layer at h_contact",
