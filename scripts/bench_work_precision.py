@@ -72,6 +72,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from sealts.io.results import read_profiles  # noqa: E402
+from sealts.problem.problem import PETSC_LU_BELOW  # noqa: E402
 OUT = ROOT / "benchmarks"
 REFERENCE = OUT / "work_precision_reference.json"
 REF_PROFILE = OUT / "work_precision_reference_profile.csv"
@@ -514,7 +515,9 @@ def report(rows, when, host, quick, ref, slider=None):
     if fit is not None:
         md += ["", f"Cost growth over the mesh family: wall time ~ n^{fit[0]:.2f} "
                "(sparse LU of a 2-D problem with nested dissection: n^1.5 flops; at these "
-               "sizes fixed costs, start-up and steps 1-2, flatten it)."]
+               "sizes fixed costs, start-up and steps 1-2, flatten it; from "
+               f"{PETSC_LU_BELOW:,} unknowns on the factorisations are UMFPACK's, below "
+               "PETSc's LU)."]
     md += ["", "## Slider (closed form, Eq. 43): steady film, best of 3", "",
            "| scheme | elements | time ms | max pressure error / p_max | Newton |",
            "|---|---|---|---|---|"]
