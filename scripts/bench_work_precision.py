@@ -13,6 +13,11 @@ UMFPACK above, sealts/problem/problem.py); each family changes one factor:
   unknowns, fitted exponent);
 * ``layer``: contact sizes 0.025, 0.02, 0.0175, 0.0125 mm kept to 0.1 mm beneath the rod
   side (``mesh.layer_depth``), bulk 0.2 mm;
+* ``placement``: the default's element sizes meshed with grading distances 0.4, 0.45, 0.55,
+  0.6 mm (``mesh.grading_distance``, 0.5 by default) and mirror-symmetric
+  (``mesh.symmetric``), and 0.0125 / 0.1 mm with 0.45 and 0.55: the same resolution with
+  the nodes elsewhere. The report gives the spread of the errors over each size's meshes,
+  which is that size's accuracy; one row alone is one draw from it;
 * ``bdf``: the BDF order 1, 2 (PETSc's default), 3 (``-stroke_ts_bdf_order``);
 * ``theta``: Crank-Nicolson (``-stroke_ts_type theta -stroke_ts_theta_theta 0.5
   -stroke_ts_theta_endpoint``);
@@ -49,11 +54,12 @@ max pressure error per scheme and element count, as ``scripts/bench_film.py`` me
 Writes benchmarks/work_precision.md (tables, machine, date, load), .csv and .png (wall time
 against the net leakage's error per family; wall time against unknowns). Usage:
 
-    .venv/bin/python scripts/bench_work_precision.py            # 27-55 min here
+    .venv/bin/python scripts/bench_work_precision.py            # 30-60 min here
     .venv/bin/python scripts/bench_work_precision.py --quick    # rtol and mesh, ~5 min
     .venv/bin/python scripts/bench_work_precision.py --families mesh,layer   # some families
     .venv/bin/python scripts/bench_work_precision.py --reference   # the reference, once
     .venv/bin/python scripts/bench_work_precision.py --from-csv    # report again, no runs
+    .venv/bin/python scripts/bench_work_precision.py --add placement   # add a family's rows
 """
 import argparse
 import csv
@@ -77,6 +83,8 @@ OUT = ROOT / "benchmarks"
 REFERENCE = OUT / "work_precision_reference.json"
 REF_PROFILE = OUT / "work_precision_reference_profile.csv"
 SLIDER = OUT / "work_precision_slider.csv"
+# notes on the last measurement, written by hand, which the report includes
+NOTES = OUT / "work_precision_notes.md"
 SEALTS = [sys.executable, "-m", "sealts", "run"]
 LIMIT = 900.0             # s, a run's time limit (SIGTERM: sealts writes its summary)
 # Crank-Nicolson crawls from t = 0.017 s on (it ran into the 900 s limit on 2026-12-03):
@@ -90,14 +98,26 @@ EVENTS = {"MatLUFactorNum": "lu", "MatLUFactorSym": "lu", "MatSolve": "solve",
 # rows of another scene than the reference's: timed, not compared
 OTHER_SCENES = ("paper_fig14_ve_sq_ff",)
 TARGETS = {"default": 10.0, "paper_fig14_ve_sq_ff": 20.0, "paper mesh": 120.0}   # s
+# the 'placement' family: the default's element sizes, meshed with these grading distances
+# (mm; the default 0.5) and mirror-symmetric: the same resolution, nodes placed elsewhere
+PLACEMENT_GRADINGS = (0.4, 0.45, 0.55, 0.6)
+BOUNDS = {"e_net": 2e-2, "e_transport": 1e-2, "e_work": 1e-2, "e_peak": 1e-2}
 
 
 def scene_text(mesh=None, name=None, film_scheme=None, base="oring_stroke.toml",
-               state_cache=False, layer=None):
+               state_cache=False, layer=None, grading=None, symmetric=False):
     """The default scene's text with the mesh sizes (contact, bulk), name or film scheme
-    replaced, ``layer`` the mesh's layer_depth (mm); without ``state_cache`` steps 1-2 run
-    in full (``[start] cache = false``)."""
+    replaced, ``layer`` the mesh's layer_depth (mm), ``grading`` its grading_distance (mm),
+    ``symmetric`` its mirror-symmetric variant; without ``state_cache`` steps 1-2 run in
+    full (``[start] cache = false``)."""
     s = (ROOT / "configs" / base).read_text()
+    if grading is not None:
+        if re.search(r"(?m)^grading_distance = ", s):
+            s = re.sub(r"(?m)^grading_distance = [0-9.e-]+", f"grading_distance = {grading}", s)
+        else:
+            s = s.replace("[mesh]\n", f"[mesh]\ngrading_distance = {grading}\n", 1)
+    if symmetric:
+        s = re.sub(r"(?m)^symmetric = false", "symmetric = true", s)
     if not state_cache:
         s += "\n[start]\ncache = false\n"
     if mesh is not None:
@@ -124,6 +144,11 @@ def settings(quick):
         return out
     out += [("layer", f"{c:g} / 0.2 mm, layer 0.1 mm", scene_text((c, 0.2), layer=0.1), [])
             for c in (0.025, 0.02, 0.0175, 0.0125)]
+    out += [("placement", f"0.025 / 0.2 mm, grading {g:g} mm", scene_text(grading=g), [])
+            for g in PLACEMENT_GRADINGS]
+    out += [("placement", "0.025 / 0.2 mm, mirror-symmetric", scene_text(symmetric=True), [])]
+    out += [("placement", f"0.0125 / 0.1 mm, grading {g:g} mm",
+             scene_text((0.0125, 0.1), grading=g), []) for g in (0.45, 0.55)]
     out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 2)]
     out += [("theta", "Crank-Nicolson", d, ["-stroke_ts_type", "theta",
                                             "-stroke_ts_theta_theta", "0.5",
@@ -313,14 +338,16 @@ def plot(rows, fit, path, when):
              "before": "BDF 2 and rtol 1e-3 (the defaults before)",
              "layer": "mesh with a 0.1 mm layer at h_contact",
              "plain": "default without -log_view",
+             "placement": "same sizes as the default or 0.0125 / 0.1 mm, nodes placed "
+                          "elsewhere (not joined)",
              "default": "default (0.025 / 0.2 mm, BDF 3, rtol 1e-2)"}
     for fam, rs in fams.items():
         # a mesh family joined in the order of its unknowns, the others of their times
         rs = sorted(rs, key=lambda r: r["unknowns"] if fam in ("mesh", "layer") and
                     r.get("unknowns") else r["wall"])
+        style = {"default": "*", "placement": "kx"}.get(fam, "o-")
         ax[0].loglog([r["wall"] for r in rs], [max(r["e_net"], 1e-6) for r in rs],
-                     "*" if fam == "default" else "o-", ms=12 if fam == "default" else 6,
-                     label=names.get(fam, fam))
+                     style, ms=12 if fam == "default" else 6, label=names.get(fam, fam))
         for r in rs:
             if fam == "mesh":
                 ax[0].annotate(r["label"], (r["wall"], max(r["e_net"], 1e-6)), fontsize=7,
@@ -377,6 +404,10 @@ def main():
     ap.add_argument("--from-csv", action="store_true",
                     help="no runs: rebuild the report from benchmarks/work_precision*.csv "
                          "and the work directory of the last measurement")
+    ap.add_argument("--add", metavar="FAMILIES",
+                    help="run these families only and add their rows to the last "
+                         "measurement's (benchmarks/work_precision.csv and its work "
+                         "directory), then rebuild the report")
     ap.add_argument("--work", default=str(ROOT / "results" / "bench_work_precision"))
     a = ap.parse_args()
     work = Path(a.work)
@@ -404,9 +435,20 @@ def main():
     ref_prof = (np.loadtxt(REF_PROFILE, delimiter=",", skiprows=1)
                 if REF_PROFILE.exists() else None)
     slider = None
-    if a.from_csv:
+    if a.from_csv or a.add:
         rows, when, host = reread(work, ref, ref_prof)
-        if SLIDER.exists():      # the slider rows of the same measurement
+        if a.add:
+            rows = [r for r in rows if r["family"] not in a.add.split(",")]
+            first = 1 + max(int(r["run"]) for r in rows)
+            added, when_added, _ = measure(work, False, ref, ref_prof, a.add.split(","),
+                                           first=first, default=False)
+            rows += added
+            when = re.sub(r" \(the .* rows added .*\)$", "", when)
+            when = f"{when} (the {a.add} rows added {when_added})"
+            meta = json.loads((work / "meta.json").read_text())
+            meta["when"] = when
+            (work / "meta.json").write_text(json.dumps(meta))
+        if SLIDER.exists():      # the slider rows of the (first) measurement
             with open(SLIDER) as f:
                 slider = [{"scheme": x["scheme"], "elements": int(x["elements"]),
                            "time_ms": float(x["time_ms"]), "error": float(x["error"]),
@@ -417,26 +459,29 @@ def main():
     report(rows, when, host, a.quick, ref, slider)
 
 
-def measure(work, quick, ref, ref_prof, families=None):
-    """Run every setting (one process each, one after another); the rows."""
+def measure(work, quick, ref, ref_prof, families=None, first=0, default=True):
+    """Run every setting (one process each, one after another); the rows. ``first``: the
+    work directory number of the first row; ``default``: the default row first, and the
+    measurement's meta.json (not when rows are added to an earlier one)."""
     when = datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     host = machine()
     print(f"{when}; {host}", flush=True)
     work.mkdir(parents=True, exist_ok=True)
-    (work / "meta.json").write_text(json.dumps({"when": when, "host": host}))
+    if default:
+        (work / "meta.json").write_text(json.dumps({"when": when, "host": host}))
     # a warm-up run compiles numba's cache and meshes the default (not timed)
     run("warm-up", scene_text(), [], work / "warm-up")
     rows = []
-    todo = [("default", "0.025 / 0.2 mm, BDF 3, rtol 1e-2", scene_text(), [])]
+    todo = [("default", "0.025 / 0.2 mm, BDF 3, rtol 1e-2", scene_text(), [])] if default else []
     todo += [t for t in settings(quick) if (families is None or t[0] in families)
              and t[1] != "rtol 1e-02"]
-    for k, (fam, label, text, opts) in enumerate(todo):
+    for k, (fam, label, text, opts) in enumerate(todo, start=first):
         if fam == "cache":       # an untimed run fills a fresh state cache first
             text = text.replace("{cache}", str(work / f"{k:02d}" / "cache"))
             run("fill", text, opts, work / f"{k:02d}" / "fill")
         r = run(label, text, opts, work / f"{k:02d}", log=fam != "plain",
                 limit=LIMITS.get(fam, LIMIT))
-        r["family"] = fam
+        r["family"], r["run"] = fam, f"{k:02d}"
         r.update(errors(r, ref, ref_prof))
         rows.append(r)
         print(f"  {fam:8s} {label:28s} {r['status']:10s} {r['wall']:7.1f} s  net "
@@ -451,18 +496,62 @@ def reread(work, ref, ref_prof):
     with open(OUT / "work_precision.csv") as f:
         rows = list(csv.DictReader(f))
     for k, r in enumerate(rows):
+        r["run"] = r.get("run") or f"{k:02d}"     # the row's work directory
         for key, v in list(r.items()):
-            if key in ("family", "label", "status"):
+            if key in ("family", "label", "status", "run"):
                 continue
             r[key] = None if v == "" else float(v)
         for key in ("unknowns", "steps", "rejected", "newton", "linear"):
             if r[key] is not None:
                 r[key] = int(r[key])
-        r.update(log_view(work / f"{k:02d}" / "log_view.txt"))
-        r["profile"] = profile(work / f"{k:02d}" / "out" / "stroke_profiles.csv")
+        r.update(log_view(work / r["run"] / "log_view.txt"))
+        r["profile"] = profile(work / r["run"] / "out" / "stroke_profiles.csv")
         r.update({key: None for key in r if key.startswith("e_")})
         r.update(errors(r, ref, ref_prof))
     return rows, meta["when"], meta["host"]
+
+
+def placement_groups(rows):
+    """Per element sizes ("0.025 / 0.2") with 'placement' rows: those rows and the default
+    or 'mesh' row of the same sizes (the meshes of one resolution, nodes placed
+    differently)."""
+    groups = {}
+    for r in rows:
+        m = re.match(r"([0-9.]+ / [0-9.]+) mm", r["label"])
+        if (m and r["family"] in ("default", "mesh", "placement") and "layer" not in r["label"]
+                and r.get("e_net") is not None):
+            groups.setdefault(m.group(1), []).append(r)
+    return {k: rs for k, rs in groups.items()
+            if len(rs) > 1 and any(r["family"] == "placement" for r in rs)}
+
+
+def spread(rs):
+    """(net min, net max, the largest error of each bounded quantity, how many rows keep
+    every bound) over the rows ``rs``."""
+    nets = [r["net"] for r in rs]
+    worst = {k: max(r[k] for r in rs) for k in BOUNDS}
+    held = sum(all(r[k] <= b for k, b in BOUNDS.items()) for r in rs)
+    return min(nets), max(nets), worst, held
+
+
+def placement(rows):
+    """The report's paragraph on the 'placement' family ([] without it)."""
+    out = []
+    for sizes, rs in placement_groups(rows).items():
+        lo, hi, worst, held = spread(rs)
+        out.append(f"- {sizes} mm, {len(rs)} meshes: net leakage {lo:.3f} to {hi:.3f} mm^3; "
+                   f"largest errors net {worst['e_net']:.1e} (bound 2e-2), transports "
+                   f"{worst['e_transport']:.1e}, friction work {worst['e_work']:.1e}, peak "
+                   f"friction {worst['e_peak']:.1e} (bounds 1e-2); the bounds hold on {held} "
+                   f"of {len(rs)}")
+    if not out:
+        return []
+    return ["", "## Where the mesher puts the nodes ('placement')", "",
+            "The same element sizes meshed several ways: grading distances of "
+            f"{min(PLACEMENT_GRADINGS):g} to {max(PLACEMENT_GRADINGS):g} mm for the default "
+            "0.5, and mirror-symmetric, so that gmsh places the nodes elsewhere at the same "
+            "resolution. One row's error is one draw from the spread below, which is the "
+            "accuracy of its sizes:", ""] + out
 
 
 def report(rows, when, host, quick, ref, slider=None):
@@ -476,7 +565,7 @@ def report(rows, when, host, quick, ref, slider=None):
         w.writerows(slider)
     OUT.mkdir(exist_ok=True)
     plot(rows, fit, OUT / "work_precision.png", when)
-    cols = ["family", "label", "status", "unknowns", "steps", "rejected", "newton", "linear",
+    cols = ["run", "family", "label", "status", "unknowns", "steps", "rejected", "newton", "linear",
             "wall", "stroke_wall", "lu", "residual", "jacobian", "solve", "total", "rss_mb",
             "net", "out", "inn", "work", "peak_out", "peak_in", "h_min", "e_net",
             "e_transport", "e_work", "e_peak", "e_hmin", "e_profile"]
@@ -512,6 +601,15 @@ def report(rows, when, host, quick, ref, slider=None):
                      f"{r['e_transport']:.1e}, work {r['e_work']:.1e}, peak friction "
                      f"{r['e_peak']:.1e} (bounds 1e-2)" if r.get("e_net") is not None
                      else ""))
+        group = placement_groups(rows).get("0.025 / 0.2") if name == "default" else None
+        if group:
+            lo, hi, worst, held = spread(group)
+            md[-1] += (f"; over the {len(group)} placements of its sizes (below) up to net "
+                       f"{worst['e_net']:.1e}, transports {worst['e_transport']:.1e}, work "
+                       f"{worst['e_work']:.1e}, peak friction {worst['e_peak']:.1e}")
+    if NOTES.exists():
+        md += ["", NOTES.read_text().strip()]
+    md += placement(rows)
     if fit is not None:
         md += ["", f"Cost growth over the mesh family: wall time ~ n^{fit[0]:.2f} "
                "(sparse LU of a 2-D problem with nested dissection: n^1.5 flops; at these "
