@@ -22,6 +22,11 @@ there: without the layer the size a few contact elements deep follows h_bulk, an
 leakage scatters with h_contact instead of converging (benchmarks/work_precision.md, the
 layer family).
 
+Refinement at given points (``build_mesh(..., refine=(points, h))``, the scene key
+``mesh.h_edge``: :mod:`sealts.mesh.contact_edges` puts the points along the rod side around
+the pressurised contact's two edges): the element size is h at the points and grows away
+from them by REFINE_GROWTH per unit distance, up to h_bulk; elsewhere the sizes above hold.
+
 Mirror-symmetric meshes (``build_mesh(..., mirror=True)``, scene key ``mesh.symmetric``): the
 unstructured mesher has no reason to place nodes symmetrically about the cross-section's
 mid-plane z = z_m (the O-ring's z0, the rectangle's mid-height), and it does not: on the
@@ -79,6 +84,11 @@ class SealMesh:
         return np.array(out)
 
 
+# how fast the element size grows away from refinement points (mm per mm of distance),
+# the setting measured on the paper's O-ring (README, "Where gmsh puts the nodes")
+REFINE_GROWTH = 0.2
+
+
 @dataclass(frozen=True)
 class ORing:
     d1: float          # inner diameter, mm
@@ -95,11 +105,16 @@ class RectangularRing:
     corner_radius: float = 0.0    # of the two corners on the rod side (part of it), mm
 
 
-def _key(shape, h_contact, h_bulk, grading_distance, mirror=False, layer_depth=0.0):
+def _key(shape, h_contact, h_bulk, grading_distance, mirror=False, layer_depth=0.0,
+         refine=None):
     spec = dict(kind=type(shape).__name__, **asdict(shape), h_contact=h_contact,
                 h_bulk=h_bulk, grading=grading_distance, version=1)
     if layer_depth:        # only then: meshes without a layer keep their keys
         spec["layer_depth"] = layer_depth
+    if refine is not None:     # only then: the same
+        points, h = refine
+        digest = hashlib.sha1(np.round(np.asarray(points, float), 9).tobytes()).hexdigest()
+        spec["refine"] = {"h": float(h), "points": len(points), "digest": digest[:16]}
     if not spec.get("corner_radius", 1.0):     # sharp corners keep their meshes' keys
         del spec["corner_radius"]
     if mirror:             # only then: the default meshes keep their keys
@@ -109,16 +124,22 @@ def _key(shape, h_contact, h_bulk, grading_distance, mirror=False, layer_depth=0
 
 
 def build_mesh(shape, h_contact, h_bulk, grading_distance=0.5, cache_dir="meshes",
-               mirror=False, layer_depth=0.0):
+               mirror=False, layer_depth=0.0, refine=None):
     """Mesh ``shape`` (ORing or RectangularRing), reusing ``cache_dir/<key>.npz``; with
     ``mirror`` mirror-symmetric about the shape's mid-plane; ``layer_depth`` (mm): the depth
-    beneath the rod side meshed at ``h_contact`` (module docstring)."""
-    key, spec = _key(shape, h_contact, h_bulk, grading_distance, mirror, layer_depth)
+    beneath the rod side meshed at ``h_contact``; ``refine`` = (points (k, 2), h): element
+    size h at those points (r, z), growing from them at REFINE_GROWTH (module docstring)."""
+    if refine is not None and mirror:
+        raise ValueError("a refinement at given points is not mirror-symmetric")
+    key, spec = _key(shape, h_contact, h_bulk, grading_distance, mirror, layer_depth, refine)
     path = Path(cache_dir) / f"{spec['kind'].lower()}-{key}.npz"
     if path.is_file():
         return load_npz(path)
-    mesh = (_mirrored_mesh if mirror else _gmsh_mesh)(shape, h_contact, h_bulk,
-                                                     grading_distance, layer_depth)
+    if mirror:
+        mesh = _mirrored_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth)
+    else:
+        mesh = _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth,
+                          refine=refine)
     path.parent.mkdir(parents=True, exist_ok=True)
     np.savez_compressed(path, X=mesh.X, conn=mesh.conn, spec=json.dumps(spec),
                         **{f"edges_{g}": e for g, e in mesh.edges.items()})
@@ -215,9 +236,11 @@ def _rectangle(occ, s, half):
     return rod + sides + [corner], [[corner] + rod] + [[c] for c in sides]
 
 
-def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth=0.0, half=False):
+def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth=0.0, half=False,
+               refine=None):
     """The gmsh mesh of the whole cross-section; with ``half`` of its half z <= z_m only,
-    returned untidied with the nodes on the mid-plane: (X, conn, edges, mid)."""
+    returned untidied with the nodes on the mid-plane: (X, conn, edges, mid); ``refine``:
+    (points, h) as :func:`build_mesh`'s."""
     import gmsh
     gmsh.initialize(interruptible=False)
     try:
@@ -262,7 +285,23 @@ def _gmsh_mesh(shape, h_contact, h_bulk, grading_distance, layer_depth=0.0, half
         f.setNumber(thr, "SizeMax", 2 * h_bulk)
         f.setNumber(thr, "DistMin", layer_depth)
         f.setNumber(thr, "DistMax", layer_depth + grading_distance)
-        f.setAsBackgroundMesh(thr)
+        if refine is None:
+            f.setAsBackgroundMesh(thr)
+        else:
+            points, h = refine
+            tags = [occ.addPoint(float(r), float(z), 0) for r, z in points]
+            occ.synchronize()        # free points: distances only, not in the mesh
+            near = f.add("Distance")
+            f.setNumbers(near, "PointsList", tags)
+            fine = f.add("Threshold")
+            f.setNumber(fine, "InField", near)
+            f.setNumber(fine, "SizeMin", 2 * h)
+            f.setNumber(fine, "SizeMax", 2 * h_bulk)
+            f.setNumber(fine, "DistMin", 0.0)
+            f.setNumber(fine, "DistMax", (h_bulk - h) / REFINE_GROWTH)
+            both = f.add("Min")
+            f.setNumbers(both, "FieldsList", [thr, fine])
+            f.setAsBackgroundMesh(both)
         gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
         gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
         gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)

@@ -267,9 +267,10 @@ SHARP_CORNERS = ("; the ring's corners are sharp (seal.corner_radius = 0), so it
                  "belong to the rod side and carry the film and the asperity contact")
 
 
-def model_from_scene(scene, comm=None):
+def model_from_scene(scene, comm=None, refine=None):
     """Mesh (cached) and SealModel for a ``model = "seal"`` scene, distributed over comm
-    (PETSc.COMM_WORLD by default)."""
+    (PETSc.COMM_WORLD by default); ``refine``: (points, h) to refine the mesh at
+    (:mod:`sealts.mesh.contact_edges`)."""
     from ..mesh.seal_mesh import ORing, RectangularRing, build_mesh
     from ..solid.term import Hyperelastic
     sl, gr, m, mat = scene.seal, scene.groove, scene.mesh, scene.material
@@ -285,7 +286,7 @@ def model_from_scene(scene, comm=None):
                                     z0 - 0.5 * sl.width, z0 + 0.5 * sl.width,
                                     sl.corner_radius)
         mesh = build_mesh(shape, m.h_contact, m.h_bulk, m.grading_distance, m.cache,
-                          mirror=m.symmetric, layer_depth=m.layer_depth)
+                          mirror=m.symmetric, layer_depth=m.layer_depth, refine=refine)
     material = Hyperelastic(mat.c10, mat.d1, mat.alpha_th, mat.temperature_rise, mat.c01)
     return SealModel(mesh, material, scene.rod.radius, 0.5 * gr.diameter,
                      (z0 - 0.5 * gr.width, z0 + 0.5 * gr.width),

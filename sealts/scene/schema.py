@@ -165,6 +165,14 @@ class Mesh:
                                 doc="depth beneath the rod side meshed at h_contact before "
                                     "the grading starts (resolves the solid under the "
                                     "contact's inlet and outlet; 0: grading from the surface)")
+    h_edge: float = option(0.0, unit="mm", ge=0.0,
+                           doc="element size at the pressurised contact's two edges, the "
+                               "film's inlets: steps 1-2 run on the mesh above first to find "
+                               "them, then on the refined mesh (0: off; README, 'Where gmsh "
+                               "puts the nodes')")
+    edge_span: float = option(0.08, unit="mm", gt=0.0,
+                              doc="how far along the rod side to either side of each edge "
+                                  "the size is h_edge")
     cache: str = option("meshes", doc="mesh cache directory (relative to the working dir)")
     symmetric: bool = option(False, doc="mesh half the cross-section and mirror it about the "
                                         "groove's mid-plane, so the mesh is mirror-symmetric "
@@ -359,6 +367,16 @@ def _check_sizes(s):
     band = perimeter * (0.25 * min(m.layer_depth, size) + 0.1 * min(m.grading_distance, size)) \
         / m.h_contact ** 2
     nodes = bulk + band
+    if m.h_edge > 0.0:
+        # two edges: the refined span (size h_edge + g d at distance d, g = REFINE_GROWTH)
+        # and the fan around its ends
+        g = 0.2
+        edges = 2 * (2 * m.edge_span / (g * m.h_edge)
+                     + np.pi / g ** 2 * np.log(max(m.h_contact / m.h_edge, 1.0)))
+        if edges > MAX_MESH_NODES - nodes:
+            raise SceneError(f"mesh.h_edge = {m.h_edge:g} mm: about {nodes + edges:.2g} mesh "
+                             f"nodes, more than {MAX_MESH_NODES:,} will not fit this machine")
+        nodes += edges
     if nodes > MAX_MESH_NODES:
         key = "mesh.h_contact" if band > bulk else "mesh.h_bulk"
         value = m.h_contact if key == "mesh.h_contact" else m.h_bulk
@@ -392,6 +410,9 @@ def _check_seal_geometry(s, base):
         if s.mesh.symmetric:
             raise SceneError("mesh.symmetric = true needs a built-in seal.shape ('oring' or "
                              "'rectangle'); a mesh file is used as it is")
+        if s.mesh.h_edge:
+            raise SceneError("mesh.h_edge needs a built-in seal.shape ('oring' or "
+                             "'rectangle'); a mesh file is used as it is")
         return   # the rest is checked on the mesh itself (sealts.problem.seal_model)
     if sl.mesh_file:
         raise SceneError(f"seal.mesh_file is only used with seal.shape = 'file' "
@@ -418,6 +439,12 @@ def _check_seal_geometry(s, base):
     if m.h_contact > m.h_bulk:
         raise SceneError(f"mesh.h_contact = {m.h_contact:g} mm must not exceed "
                          f"mesh.h_bulk = {m.h_bulk:g} mm")
+    if m.h_edge > 0.0 and m.h_edge >= m.h_contact:
+        raise SceneError(f"mesh.h_edge = {m.h_edge:g} mm must be below "
+                         f"mesh.h_contact = {m.h_contact:g} mm (0: no refinement)")
+    if m.h_edge > 0.0 and m.symmetric:
+        raise SceneError("mesh.h_edge refines at the contact's edges, which are not "
+                         "mirror images: it needs mesh.symmetric = false")
 
 
 def _check_viscoelastic(s):

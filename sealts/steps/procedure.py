@@ -63,16 +63,57 @@ def steps_for(scene, command="run", resume=None, options=None):
     return steps
 
 
-def new_state(scene, comm=None, writer=None, say=None):
-    """The state a run starts from: the scene's model (for a seal scene), no history."""
+def new_state(scene, comm=None, writer=None, say=None, options=None, cache=False):
+    """The state a run starts from: the scene's model (for a seal scene), no history. With
+    ``mesh.h_edge`` the model's mesh is refined at the contact's edges, which steps 1-2 on
+    the scene's own mesh find first (:func:`refine_at_edges`; their work counts in the
+    state's counters; ``cache``: from the state cache where it has them, ``options`` the
+    PETSc options in force, which key it)."""
     from petsc4py import PETSc
     comm = comm or PETSc.COMM_WORLD
     if writer is None:
         from ..io.writer import NullWriter
         writer = NullWriter()
     say = say or Progress(comm, scene.output.progress)
-    model = model_from_scene(scene, comm) if scene.model == "seal" else None
-    return RunState(scene, model, writer, say, comm)
+    if scene.model != "seal":
+        return RunState(scene, None, writer, say, comm)
+    refine, base = None, None
+    if scene.mesh.h_edge > 0.0:
+        refine, base = refine_at_edges(scene, comm, say, options, cache)
+    state = RunState(scene, model_from_scene(scene, comm, refine), writer, say, comm)
+    if base is not None:
+        state.counters.add(base.counters)
+        state.parts["mesh_refinement"] = base.parts.pop("mesh_refinement")
+    return state
+
+
+def refine_at_edges(scene, comm, say, options=None, cache=False):
+    """Steps 1-2 of ``scene`` on its own mesh (``mesh.h_edge`` off, no ``[start]`` state;
+    with ``cache`` from the state cache where it has them), and the refinement at the
+    pressurised contact's edges (:mod:`sealts.mesh.contact_edges`): (refine or None, that
+    state, whose parts hold the summary's ``mesh_refinement``)."""
+    from dataclasses import replace
+    from ..mesh.contact_edges import edge_refinement
+    m = scene.mesh
+    base = replace(scene, mesh=replace(m, h_edge=0.0), start=replace(scene.start, state=""))
+    say(f"mesh.h_edge = {m.h_edge:g} mm: steps 1-2 on the scene's mesh first, to find the "
+        "contact's edges", force=True)
+    st = run_steps(steps_1_2(base, StateCache.for_scene(base, options) if cache else None),
+                   new_state(base, comm, None, say))
+    refine, edges = edge_refinement(st.model, st.t, st.u, m.h_edge, m.edge_span)
+    st.parts["mesh_refinement"] = {
+        "h_edge": m.h_edge, "edge_span": m.edge_span,
+        "points": 0 if refine is None else len(refine[0]), "edges_reference_mm": edges,
+        "base_nodes": int(st.model.mesh.X.shape[0]),
+        "base_steps_1_2": st.parts.get("steps_1_2", {}).get("from", "computed")}
+    if refine is None:
+        say("mesh.h_edge: the seal does not touch the rod after steps 1-2; the mesh is not "
+            "refined", force=True)
+    else:
+        say("contact edges at (r, z) = " + ", ".join(f"({r:.4f}, {z:.4f})" for r, z in edges)
+            + f" mm; refined to {m.h_edge:g} mm over {m.edge_span:g} mm each side",
+            force=True)
+    return refine, st
 
 
 def run_steps(steps, state):
@@ -97,7 +138,17 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
     summary. ``resume``: a stroke checkpoint the run goes on from (``--restart``)."""
     from ..io.provenance import provenance
     t_wall = time.perf_counter()
-    state = new_state(scene, comm, writer)
+    try:
+        state = new_state(scene, comm, writer, options=petsc_options, cache=True)
+    except (Exception, Interrupted) as e:
+        if scene.model == "seal" and scene.mesh.h_edge > 0.0 and writer.root:
+            # steps 1-2 on the scene's own mesh (mesh.h_edge) failed: the run says so
+            writer.summary({"status": "interrupted" if isinstance(e, Interrupted) else "failed",
+                            "error": f"steps 1-2 on the scene's mesh (mesh.h_edge): "
+                                     f"{type(e).__name__}: {e}".splitlines()[0],
+                            "scene": scene.name, "source": scene.source,
+                            "wall_time_s": time.perf_counter() - t_wall})
+        raise
     model = state.model
     if model is not None:
         cells = model.partition.cells_per_rank

@@ -1,0 +1,81 @@
+"""mesh.h_edge: the mesh refined at the pressurised contact's edges (sealts/mesh/contact_edges.py).
+
+What is asserted:
+
+* the points lie on the chain's reference polyline at the arc lengths asked for, a
+  closed form on a straight chain (clipped at its ends);
+* the mesh built with them has elements of about h at the points and the contact size
+  far from them (the refinement is where it was asked for, and only there);
+* the whole loop on the coarse O-ring: steps 1-2 on the scene's own mesh find the
+  contact's edges, and on the refined mesh the pressurised contact ends inside the
+  refined spans, between chain nodes about h_edge apart; the summary says so.
+"""
+import numpy as np
+import pytest
+
+from conftest import scene
+from sealts.mesh.contact_edges import points_along
+from sealts.mesh.seal_mesh import ORing, _key, build_mesh
+
+H_CONTACT, H_BULK = 0.1, 0.4
+
+
+def test_points_lie_on_the_chain_at_the_arc_lengths_asked_for():
+    X = np.column_stack([np.full(11, 25.0), np.linspace(0.0, 1.0, 11)])   # z every 0.1 mm
+    chain = np.arange(11)
+    p = points_along(X, chain, [5], span=0.2, spacing=0.01)
+    assert np.allclose(p[:, 0], 25.0)
+    assert p[:, 1] == pytest.approx(np.linspace(0.3, 0.7, 41))
+    ends = points_along(X, chain, [0, 10], span=0.2, spacing=0.05)   # clipped to the chain
+    assert ends[:, 1] == pytest.approx([0.0, 0.05, 0.1, 0.15, 0.2, 0.8, 0.85, 0.9, 0.95, 1.0])
+
+
+def _chain_spacing(mesh):
+    chain = mesh.chain("rod_side")
+    P = mesh.X[chain]
+    return P, np.hypot(*np.diff(P, axis=0).T)
+
+
+def test_refinement_puts_elements_of_h_at_the_points_only(tmp_path):
+    shape, h = ORing(50.17, 5.33), 0.01
+    rc, R = 0.5 * (50.17 + 5.33), 0.5 * 5.33
+    a = np.radians(np.linspace(199.0, 201.0, 200))       # 0.09 mm of the rod-side arc
+    points = np.column_stack([rc + R * np.cos(a), R * np.sin(a)])
+    plain = build_mesh(shape, H_CONTACT, H_BULK, cache_dir=tmp_path)
+    fine = build_mesh(shape, H_CONTACT, H_BULK, cache_dir=tmp_path, refine=(points, h))
+    P, d = _chain_spacing(fine)
+    mid = 0.5 * (P[1:] + P[:-1])
+    dist = np.min(np.hypot(mid[:, None, 0] - points[None, :, 0],
+                           mid[:, None, 1] - points[None, :, 1]), axis=1)
+    assert d[dist < 0.01].max() < 1.5 * h                  # h at the points
+    assert d[dist > 1.0].min() > 0.5 * H_CONTACT           # the contact size far away
+    assert fine.X.shape[0] > plain.X.shape[0]
+    assert _key(shape, H_CONTACT, H_BULK, 0.5)[1] == _key(shape, H_CONTACT, H_BULK, 0.5,
+                                                        refine=None)[1]
+    assert _key(shape, H_CONTACT, H_BULK, 0.5, refine=(points, h))[1]["refine"]["h"] == h
+    with pytest.raises(ValueError, match="mirror"):
+        build_mesh(shape, H_CONTACT, H_BULK, cache_dir=tmp_path, mirror=True,
+                   refine=(points, h))
+
+
+def test_the_pressurised_contact_ends_inside_the_refined_spans(tmp_path):
+    from sealts.mesh.contact_edges import edge_nodes
+    from sealts.steps import prepare
+    h = 0.01
+    s = scene("oring_stroke", mesh={"h_contact": H_CONTACT, "h_bulk": H_BULK, "h_edge": h,
+                                    "cache": str(tmp_path)},
+              output={"progress": False})
+    st = prepare(s)
+    record = st.parts["mesh_refinement"]
+    assert record["h_edge"] == h and record["points"] > 0
+    assert len(record["edges_reference_mm"]) == 2
+    assert st.model.mesh.X.shape[0] > record["base_nodes"]
+    chain = st.model.side.chain
+    P, d = _chain_spacing(st.model.mesh)
+    for i in edge_nodes(st.model, st.t, st.u):
+        # the first and last node the rod presses, on the refined mesh: between
+        # neighbours about h_edge apart, within the span of the base mesh's edge
+        assert max(d[max(i - 1, 0)], d[min(i, d.size - 1)]) < 1.5 * h
+        near = min(np.hypot(*(st.model.mesh.X[chain[i]] - np.array(e))) for e in
+                   record["edges_reference_mm"])
+        assert near < s.mesh.edge_span
