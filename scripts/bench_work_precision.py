@@ -18,6 +18,9 @@ UMFPACK above, sealts/problem/problem.py); each family changes one factor:
   (``mesh.symmetric``), and 0.0125 / 0.1 mm with 0.45 and 0.55: the same resolution with
   the nodes elsewhere. The report gives the spread of the errors over each size's meshes,
   which is that size's accuracy; one row alone is one draw from it;
+* ``edge``: the default with ``mesh.h_edge`` = 0.0015 mm (the mesh refined at the
+  pressurised contact's edges, the film's inlets), at the default grading distance and the
+  four of ``placement``;
 * ``bdf``: the BDF order 1, 2 (PETSc's default), 3 (``-stroke_ts_bdf_order``);
 * ``theta``: Crank-Nicolson (``-stroke_ts_type theta -stroke_ts_theta_theta 0.5
   -stroke_ts_theta_endpoint``);
@@ -101,14 +104,16 @@ TARGETS = {"default": 10.0, "paper_fig14_ve_sq_ff": 20.0, "paper mesh": 120.0}  
 # the 'placement' family: the default's element sizes, meshed with these grading distances
 # (mm; the default 0.5) and mirror-symmetric: the same resolution, nodes placed elsewhere
 PLACEMENT_GRADINGS = (0.4, 0.45, 0.55, 0.6)
+# the 'edge' family: the default with mesh.h_edge (mm), at the default grading and those
+EDGE_H = 0.0015
 BOUNDS = {"e_net": 2e-2, "e_transport": 1e-2, "e_work": 1e-2, "e_peak": 1e-2}
 
 
 def scene_text(mesh=None, name=None, film_scheme=None, base="oring_stroke.toml",
-               state_cache=False, layer=None, grading=None, symmetric=False):
+               state_cache=False, layer=None, grading=None, symmetric=False, h_edge=None):
     """The default scene's text with the mesh sizes (contact, bulk), name or film scheme
     replaced, ``layer`` the mesh's layer_depth (mm), ``grading`` its grading_distance (mm),
-    ``symmetric`` its mirror-symmetric variant; without ``state_cache`` steps 1-2 run in
+    ``symmetric`` its mirror-symmetric variant, ``h_edge`` its mesh.h_edge (mm); without ``state_cache`` steps 1-2 run in
     full (``[start] cache = false``)."""
     s = (ROOT / "configs" / base).read_text()
     if grading is not None:
@@ -118,6 +123,8 @@ def scene_text(mesh=None, name=None, film_scheme=None, base="oring_stroke.toml",
             s = s.replace("[mesh]\n", f"[mesh]\ngrading_distance = {grading}\n", 1)
     if symmetric:
         s = re.sub(r"(?m)^symmetric = false", "symmetric = true", s)
+    if h_edge is not None:
+        s = re.sub(r"(?m)^h_edge = [0-9.e-]+", f"h_edge = {h_edge}", s)
     if not state_cache:
         s += "\n[start]\ncache = false\n"
     if mesh is not None:
@@ -149,6 +156,10 @@ def settings(quick):
     out += [("placement", "0.025 / 0.2 mm, mirror-symmetric", scene_text(symmetric=True), [])]
     out += [("placement", f"0.0125 / 0.1 mm, grading {g:g} mm",
              scene_text((0.0125, 0.1), grading=g), []) for g in (0.45, 0.55)]
+    edge = f"0.025 / 0.2 mm, h_edge {EDGE_H:g} mm"
+    out += [("edge", edge, scene_text(h_edge=EDGE_H), [])]
+    out += [("edge", f"{edge}, grading {g:g} mm", scene_text(h_edge=EDGE_H, grading=g), [])
+            for g in PLACEMENT_GRADINGS]
     out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 2)]
     out += [("theta", "Crank-Nicolson", d, ["-stroke_ts_type", "theta",
                                             "-stroke_ts_theta_theta", "0.5",
@@ -340,12 +351,13 @@ def plot(rows, fit, path, when):
              "plain": "default without -log_view",
              "placement": "same sizes as the default or 0.0125 / 0.1 mm, nodes placed "
                           "elsewhere (not joined)",
+             "edge": "the default with mesh.h_edge 0.0015 mm, five placements (not joined)",
              "default": "default (0.025 / 0.2 mm, BDF 3, rtol 1e-2)"}
     for fam, rs in fams.items():
         # a mesh family joined in the order of its unknowns, the others of their times
         rs = sorted(rs, key=lambda r: r["unknowns"] if fam in ("mesh", "layer") and
                     r.get("unknowns") else r["wall"])
-        style = {"default": "*", "placement": "kx"}.get(fam, "o-")
+        style = {"default": "*", "placement": "kx", "edge": "r+"}.get(fam, "o-")
         ax[0].loglog([r["wall"] for r in rs], [max(r["e_net"], 1e-6) for r in rs],
                      style, ms=12 if fam == "default" else 6, label=names.get(fam, fam))
         for r in rs:
@@ -512,17 +524,19 @@ def reread(work, ref, ref_prof):
 
 
 def placement_groups(rows):
-    """Per element sizes ("0.025 / 0.2") with 'placement' rows: those rows and the default
-    or 'mesh' row of the same sizes (the meshes of one resolution, nodes placed
-    differently)."""
+    """Rows of one setting meshed several ways: per setting ("0.025 / 0.2 mm", "0.025 /
+    0.2 mm, h_edge 0.0015 mm"), its default, 'mesh' or 'edge' row and the rows of the same
+    setting with another grading distance or mirror-symmetric; only settings that have
+    such rows."""
     groups = {}
     for r in rows:
-        m = re.match(r"([0-9.]+ / [0-9.]+) mm", r["label"])
-        if (m and r["family"] in ("default", "mesh", "placement") and "layer" not in r["label"]
-                and r.get("e_net") is not None):
-            groups.setdefault(m.group(1), []).append(r)
+        if r["family"] not in ("default", "mesh", "placement", "edge") or r.get("e_net") is None:
+            continue
+        key = ("0.025 / 0.2 mm" if r["family"] == "default" else
+               re.sub(r", (grading [0-9.]+ mm|mirror-symmetric)$", "", r["label"]))
+        groups.setdefault(key, []).append(r)
     return {k: rs for k, rs in groups.items()
-            if len(rs) > 1 and any(r["family"] == "placement" for r in rs)}
+            if len(rs) > 1 and any(re.search(r"grading|mirror", r["label"]) for r in rs)}
 
 
 def spread(rs):
@@ -539,7 +553,7 @@ def placement(rows):
     out = []
     for sizes, rs in placement_groups(rows).items():
         lo, hi, worst, held = spread(rs)
-        out.append(f"- {sizes} mm, {len(rs)} meshes: net leakage {lo:.3f} to {hi:.3f} mm^3; "
+        out.append(f"- {sizes}, {len(rs)} meshes: net leakage {lo:.3f} to {hi:.3f} mm^3; "
                    f"largest errors net {worst['e_net']:.1e} (bound 2e-2), transports "
                    f"{worst['e_transport']:.1e}, friction work {worst['e_work']:.1e}, peak "
                    f"friction {worst['e_peak']:.1e} (bounds 1e-2); the bounds hold on {held} "
@@ -601,12 +615,21 @@ def report(rows, when, host, quick, ref, slider=None):
                      f"{r['e_transport']:.1e}, work {r['e_work']:.1e}, peak friction "
                      f"{r['e_peak']:.1e} (bounds 1e-2)" if r.get("e_net") is not None
                      else ""))
-        group = placement_groups(rows).get("0.025 / 0.2") if name == "default" else None
+        group = placement_groups(rows).get("0.025 / 0.2 mm") if name == "default" else None
         if group:
             lo, hi, worst, held = spread(group)
             md[-1] += (f"; over the {len(group)} placements of its sizes (below) up to net "
                        f"{worst['e_net']:.1e}, transports {worst['e_transport']:.1e}, work "
                        f"{worst['e_work']:.1e}, peak friction {worst['e_peak']:.1e}")
+    for key, rs in placement_groups(rows).items():
+        if "h_edge" in key:          # the refined default: its time and its spread
+            r = next(x for x in rs if "grading" not in x["label"])
+            lo, hi, worst, held = spread(rs)
+            md.append(f"- {key}: {r['wall']:.1f} s against {TARGETS['default']:g} s (with "
+                      f"-log_view); over its {len(rs)} placements up to net "
+                      f"{worst['e_net']:.1e}, transports {worst['e_transport']:.1e}, work "
+                      f"{worst['e_work']:.1e}, peak friction {worst['e_peak']:.1e}: the "
+                      f"bounds hold on {held} of {len(rs)}")
     if NOTES.exists():
         md += ["", NOTES.read_text().strip()]
     md += placement(rows)
