@@ -73,23 +73,6 @@ def test_a_crumpled_element_pressed_into_a_wall_is_no_fold():
     RodSideGuard(side, depth=7e-4, walls=lambda t: (-1.0, 0.2)).accepted(0.0, u)
 
 
-def test_an_element_straddling_a_wall_plane_is_no_fold():
-    """A rod side refined to microns at the corner (mesh.h_edge): an element 1.5 um long up
-    the wall (z = 0.2), one node 1.3 um into it and the next 0.1 um short of it, turned
-    back by 1.4 um: the penalty's compliance, no fold for a guard that knows the walls; the
-    same element 5 um short of the wall is one (FOLD: back by more than a tenth of its
-    reference length)."""
-    side, u = chain(length=0.0015)                      # elements of 1.5 um
-    for k, (dr, depth) in enumerate(((0.05, 1.3e-3), (0.0515, -1e-4), (0.10, 1e-3)), start=3):
-        u[side.ur[k]] = dr                              # up the wall at z = 0.2
-        u[side.uz[k]] = 0.2 + depth - side.Z[k]
-    walls = lambda t: (-1.0, 0.2)                       # noqa: E731
-    RodSideGuard(side, depth=7e-4, walls=walls).accepted(0.0, u)
-    u[side.uz[[3, 4, 5]]] -= 5e-3                       # 5 um short of the wall: a fold
-    with pytest.raises(SolveError, match="folds over between nodes 3 and 4"):
-        RodSideGuard(side, depth=7e-4, walls=walls).accepted(0.0, u)
-
-
 def test_the_extrusion_guard_sees_a_tongue_whatever_its_direction():
     """A tongue's return edge, turned back by 6 um but still steep (along r), is no fold for
     the rod-side guard and one for the extrusion guard (fold with back=None), which looks

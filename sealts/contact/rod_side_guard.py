@@ -17,12 +17,8 @@ to node, so neighbours there swap their axial order by microns (4 um at 40 MPa, 
 FOLD of a 0.025 mm element): their element runs along the wall, radially, and is not a fold
 (the film takes it as a short positive element, :mod:`sealts.film.reynolds_fv`); nor is an
 element both of whose nodes are pressed into the same wall, even where the surface there
-is crumpled so short that the penalty's microns tilt it backwards. A node within WALL_BAND
-of a wall's plane counts as pressed into it: the penalty acts within a fraction of a micron
-of the plane (its softplus width), and where the rod side is refined to microns at the
-corner (``mesh.h_edge`` at 30 MPa) an element may straddle the plane, one node 1.3 um in
-and its neighbour 0.1 um short, turned back by the penalty's compliance alone. Nodes
-pressed flat against a wall sit at one axial position to round-off, far above that bound.
+is crumpled so short that the penalty's microns tilt it backwards. Nodes pressed flat
+against a wall sit at one axial position to round-off, far above that bound.
 """
 import numpy as np
 
@@ -30,7 +26,6 @@ from ..core import SolveError, Term
 
 FOLD = 0.1      # an element inverted by a tenth of its reference length ...
 BACK = 0.5      # ... and pointing backwards along the rod (within 60 degrees of it)
-WALL_BAND = 1e-3   # mm: a node this close to a wall's plane, or past it, is pressed into it
 
 
 def fold(side, u, back=BACK, skip=None):
@@ -67,13 +62,12 @@ class RodSideGuard(Term):
         self._check_off(t, u)
 
     def _pressed(self, t, u):
-        """Per element: both nodes pressed into the same side wall, or within WALL_BAND of
-        it (None without walls)."""
+        """Per element: both nodes pressed into the same side wall (None without walls)."""
         if self.walls is None:
             return None
         za, zb = self.walls(t)
         y = self.side.y(u)
-        a, b = y <= za + WALL_BAND, y >= zb - WALL_BAND
+        a, b = y <= za, y >= zb
         return (a[:-1] & a[1:]) | (b[:-1] & b[1:])
 
     def _check_fold(self, t, u):
