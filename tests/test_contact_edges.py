@@ -30,6 +30,33 @@ def test_points_lie_on_the_chain_at_the_arc_lengths_asked_for():
     assert ends[:, 1] == pytest.approx([0.0, 0.05, 0.1, 0.15, 0.2, 0.8, 0.85, 0.9, 0.95, 1.0])
 
 
+def test_no_points_within_a_span_of_a_side_wall():
+    """A contact from z = 0.2 to 0.9 mm on a straight chain, a side wall at z = 0.95: the
+    span around the edge at 0.9 stops 0.08 mm short of the wall (z < 0.87), the one at 0.2
+    is whole; with the wall at 2.0 both are."""
+    from types import SimpleNamespace as NS
+    from sealts.mesh.contact_edges import edge_refinement
+    z = np.linspace(0.0, 1.0, 11)
+    X = np.column_stack([np.full(11, 25.0), z])
+    p = np.where((z > 0.15) & (z < 0.95), 1.0, 0.0)
+    chain = np.arange(11)
+
+    def model(wall):
+        return NS(mesh=NS(X=X), contact_profile=lambda t, u: (z, 0.0 * z, p),
+                  side=NS(chain=chain, y=lambda u: z),
+                  groove=NS(z_walls=lambda t: (-1.0, wall)))
+
+    (points, h), edges = edge_refinement(model(0.95), 0.0, None, 0.01, 0.08)
+    assert edges == [[25.0, 0.2], [25.0, 0.9]]
+    near = points[points[:, 1] > 0.5, 1]
+    assert near.max() < 0.87 and near.min() == pytest.approx(0.82)
+    low = points[points[:, 1] < 0.5, 1]
+    assert (low.min(), low.max()) == pytest.approx((0.12, 0.28))
+    assert np.diff(low).max() <= 0.005 + 1e-12                 # h / 2 apart
+    (whole, _), _ = edge_refinement(model(2.0), 0.0, None, 0.01, 0.08)
+    assert whole[:, 1].max() == pytest.approx(0.98)
+
+
 def _chain_spacing(mesh):
     chain = mesh.chain("rod_side")
     P = mesh.X[chain]
