@@ -455,10 +455,12 @@ def main():
             added, when_added, _ = measure(work, False, ref, ref_prof, a.add.split(","),
                                            first=first, default=False)
             rows += added
-            when = re.sub(r" \(the .* rows added .*\)$", "", when)
-            when = f"{when} (the {a.add} rows added {when_added})"
             meta = json.loads((work / "meta.json").read_text())
-            meta["when"] = when
+            base = meta.get("measured", re.sub(r" \(the .*\)$", "", when))
+            added = {**meta.get("added", {}), a.add: when_added}
+            when = base + " (" + "; ".join(f"the {f} rows added {w}"
+                                          for f, w in added.items()) + ")"
+            meta.update(when=when, measured=base, added=added)
             (work / "meta.json").write_text(json.dumps(meta))
         if SLIDER.exists():      # the slider rows of the (first) measurement
             with open(SLIDER) as f:
