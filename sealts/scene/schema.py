@@ -14,6 +14,7 @@ import numpy as np
 
 from ..film.floor import mean_gap_at_contact, roughness
 from ..film.flow_factor_tables import PATIR_CHENG_GAMMAS, read_table, tabulated_gamma
+from ..mesh.seal_mesh import REFINE_GROWTH
 from .errors import SceneError
 from .spec import build, option
 
@@ -349,7 +350,8 @@ def _check_sizes(s):
     mesh's node count estimated as its section over h_bulk^2 plus the graded band along
     the rod side over h_contact^2 (a tenth of the perimeter times grading_distance: the
     0.025 / 0.2 O-ring mesh gives 1,900 for its 1,411 nodes; plus a quarter of the perimeter
-    times layer_depth), and the film's element count."""
+    times layer_depth; plus mesh.h_edge's refinement), and the film's element count; the
+    key that contributes most is named."""
     if s.model == "film":
         if s.film.elements > MAX_FILM_ELEMENTS:
             raise SceneError(f"film.elements = {s.film.elements:,}: more than "
@@ -366,22 +368,19 @@ def _check_sizes(s):
     bulk = area / m.h_bulk ** 2
     band = perimeter * (0.25 * min(m.layer_depth, size) + 0.1 * min(m.grading_distance, size)) \
         / m.h_contact ** 2
-    nodes = bulk + band
-    if m.h_edge > 0.0:
-        # two edges: the refined span (size h_edge + g d at distance d, g = REFINE_GROWTH)
-        # and the fan around its ends
-        g = 0.2
-        edges = 2 * (2 * m.edge_span / (g * m.h_edge)
-                     + np.pi / g ** 2 * np.log(max(m.h_contact / m.h_edge, 1.0)))
-        if edges > MAX_MESH_NODES - nodes:
-            raise SceneError(f"mesh.h_edge = {m.h_edge:g} mm: about {nodes + edges:.2g} mesh "
-                             f"nodes, more than {MAX_MESH_NODES:,} will not fit this machine")
-        nodes += edges
+    # mesh.h_edge: two edges, each a refined span (size h_edge + g d at distance d, g the
+    # mesh's REFINE_GROWTH) and the fan around its ends
+    g = REFINE_GROWTH
+    edges = (2 * (2 * m.edge_span / (g * m.h_edge)
+                  + np.pi / g ** 2 * np.log(max(m.h_contact / m.h_edge, 1.0)))
+             if m.h_edge > 0.0 else 0.0)
+    nodes = bulk + band + edges
     if nodes > MAX_MESH_NODES:
-        key = "mesh.h_contact" if band > bulk else "mesh.h_bulk"
-        value = m.h_contact if key == "mesh.h_contact" else m.h_bulk
-        raise SceneError(f"{key} = {value:g} mm: about {nodes:.2g} mesh nodes, more than "
-                         f"{MAX_MESH_NODES:,} will not fit this machine")
+        parts = {"mesh.h_bulk": (bulk, m.h_bulk), "mesh.h_contact": (band, m.h_contact),
+                 "mesh.h_edge": (edges, m.h_edge)}
+        key = max(parts, key=lambda k: parts[k][0])
+        raise SceneError(f"{key} = {parts[key][1]:g} mm: about {nodes:.2g} mesh nodes, more "
+                         f"than {MAX_MESH_NODES:,} will not fit this machine")
 
 
 def _check_seal_geometry(s, base):
