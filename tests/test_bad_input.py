@@ -131,6 +131,12 @@ RUN = [
      [], "start.state"),
     ("state file without a displacement", seal(start={"state": "s.h5"}), {"s.h5": "EMPTY_H5"},
      [], "start.state"),
+    ("state file without the mesh.h_edge refinement",
+     seal(start={"state": "s.h5"}, mesh={"h_edge": 0.01}), {"s.h5": "EMPTY_H5"}, [],
+     "holds no mesh refinement for mesh.h_edge"),
+    ("state file refined at another mesh.h_edge",
+     seal(start={"state": "s.h5"}, mesh={"h_edge": 0.01}), {"s.h5": "REFINED_H5"}, [],
+     "was saved with mesh.h_edge = 0.02 mm, not 0.01 mm"),
     ("restart without a checkpoint", seal(), {}, ["--restart", "{dir}"],
      "no stroke_checkpoint.h5 in"),
     ("restart file not a checkpoint", seal(), {"stroke_checkpoint.h5": "EMPTY_H5"},
@@ -152,6 +158,11 @@ def _write(d, text, files):
             import h5py
             with h5py.File(path, "w") as f:
                 f.attrs["p_in"] = 1.0
+        elif content == "REFINED_H5":        # refined at one point to 0.02 mm
+            import h5py
+            with h5py.File(path, "w") as f:
+                f["refine_points"] = [[25.3, 0.0]]
+                f.attrs["refine_h"] = 0.02
         elif isinstance(content, bytes):
             path.write_bytes(content)
         else:

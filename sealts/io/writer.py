@@ -199,3 +199,20 @@ class NullWriter(Writer):
     def __init__(self):
         self.dir, self.root, self.plots = Path(os.devnull), False, False
         self._files, self._profiles, self._series, self.written = {}, {}, [], []
+
+
+class ProfileRecorder(NullWriter):
+    """A NullWriter that keeps the profiles it is given, to hand them to a real writer
+    later (``replay``): steps 1-2 run on trial meshes (``mesh.h_edge``) before the run
+    knows which one it keeps."""
+
+    def __init__(self):
+        super().__init__()
+        self.calls = []
+
+    def profile(self, t, prof, name="profiles.csv", label=None):
+        self.calls.append((t, prof, name, label))
+
+    def replay(self, writer):
+        for t, prof, name, label in self.calls:
+            writer.profile(t, prof, name=name, label=label)

@@ -19,7 +19,9 @@ the chain's reference polyline (the seal as meshed, so the material points that 
 pressurised contact's edges are), ``h / 2`` apart over ``span`` to either side of each
 edge: friction shears the seal during a stroke and moves the edges' material points by a
 few hundredths of a millimetre. Near a groove side wall it refines nothing
-(:func:`edge_refinement`).
+(:func:`edge_refinement`). Steps 1-2 on the refined mesh can settle the seal elsewhere (its
+roll is weakly held); where an edge then lies outside the spans, it is refined as well and
+steps 1-2 run again (``sealts.steps.procedure.refine_at_edges``).
 """
 import numpy as np
 
@@ -47,19 +49,24 @@ def points_along(X, chain, at, span, spacing, values=None):
     return points if values is None else (points, np.interp(q, s, values))
 
 
-def edge_refinement(model, t, u, h, span):
-    """(points, h) for ``build_mesh(..., refine=...)`` around the contact's edges at (t, u),
-    or None where the seal does not touch the rod; and the edges' reference positions
-    (r, z) in mm. Points whose pressurised axial position lies within ``span`` of a groove
-    side wall's plane are left out: where the contact ends in the corner against a wall
-    there is no inlet to resolve, and micrometre elements pressed into a wall are turned
-    over by the wall penalty's compliance (about 0.1 um per MPa)."""
+def edge_refinement(model, t, u, h, span, refined=()):
+    """(points, h) for ``build_mesh(..., refine=...)`` around the contact's edges at (t, u)
+    that are not refined yet, or None where there is none; the edges' reference positions
+    (r, z) in mm; and those of them that got points. ``refined``: the reference positions
+    of edges refined before (another pass's): an edge within ``span / 2`` of one is
+    covered. Points whose pressurised axial position lies within ``span`` of a groove side
+    wall's plane are left out: where the contact ends in the corner against a wall there
+    is no inlet to resolve, and micrometre elements pressed into a wall are turned over by
+    the wall penalty's compliance (about 0.1 um per MPa)."""
     at = edge_nodes(model, t, u)
-    if not at:
-        return None, []
     chain = model.side.chain
-    points, z = points_along(model.mesh.X, chain, at, span, 0.5 * h, values=model.side.y(u))
+    edges = [model.mesh.X[chain[i]].tolist() for i in at]
+    new = [(i, e) for i, e in zip(at, edges)
+           if all(np.hypot(e[0] - c[0], e[1] - c[1]) > 0.5 * span for c in refined)]
+    if not new:
+        return None, edges, []
+    points, z = points_along(model.mesh.X, chain, [i for i, _ in new], span, 0.5 * h,
+                             values=model.side.y(u))
     za, zb = model.groove.z_walls(t)
     points = points[(z > za + span) & (z < zb - span)]
-    edges = [model.mesh.X[chain[i]].tolist() for i in at]
-    return ((points, float(h)) if len(points) else None), edges
+    return ((points, float(h)) if len(points) else None), edges, [e for _, e in new]

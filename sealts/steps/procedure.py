@@ -29,10 +29,14 @@ from .state_cache import SaveToCache, StateCache
 from .stroke import Stroke
 
 
-def steps_1_2(scene, cache=None):
+def steps_1_2(scene, cache=None, prepared=False):
     """A seal scene's steps 1-2: mount and (p_in != 0) pressurise, or the restart from a
     ``[start] state`` file or from the state cache (``cache``: the scene's
-    :class:`sealts.steps.state_cache.StateCache` entry, None without)."""
+    :class:`sealts.steps.state_cache.StateCache` entry, None without). ``prepared``: the
+    state has them already (``mesh.h_edge``: :func:`refined_state`); only the cache is
+    written."""
+    if prepared:
+        return [SaveToCache(cache)] if cache is not None else []
     if scene.start.state:
         return [Restart(scene.start.state)]
     if cache is not None and cache.hit():
@@ -42,16 +46,17 @@ def steps_1_2(scene, cache=None):
     return steps + ([SaveToCache(cache)] if cache is not None else [])
 
 
-def steps_for(scene, command="run", resume=None, options=None):
+def steps_for(scene, command="run", resume=None, options=None, prepared=False):
     """The steps of a scene (``command``: "run" or "ihl"); ``resume``: a stroke checkpoint
     to go on from (``--restart``; :func:`sealts.steps.run_checkpoint.check_restart`);
-    ``options``: the PETSc options in force (they key the state cache)."""
+    ``options``: the PETSc options in force (they key the state cache); ``prepared``: the
+    state has steps 1-2 already (:func:`new_state`)."""
     if resume is not None:       # the checkpoint of the scene's hold or of its stroke
         return [Restart(resume),
                 Hold(resume=resume) if scene.hold.p_end != 0.0 else Stroke(resume=resume)]
     if scene.model == "film":
         return [SteadyFilm() if scene.analysis.type == "steady" else TransientFilm()]
-    steps = steps_1_2(scene, StateCache.for_scene(scene, options, command))
+    steps = steps_1_2(scene, StateCache.for_scene(scene, options, command), prepared)
     if command == "ihl":
         return steps + [Ihl()]
     if not scene.start.state:         # also from the cache: every run leaves its state.h5
@@ -65,10 +70,9 @@ def steps_for(scene, command="run", resume=None, options=None):
 
 def new_state(scene, comm=None, writer=None, say=None, options=None, cache=False):
     """The state a run starts from: the scene's model (for a seal scene), no history. With
-    ``mesh.h_edge`` the model's mesh is refined at the contact's edges, which steps 1-2 on
-    the scene's own mesh find first (:func:`refine_at_edges`; their work counts in the
-    state's counters; ``cache``: from the state cache where it has them, ``options`` the
-    PETSc options in force, which key it)."""
+    ``mesh.h_edge`` the model's mesh is refined at the contact's edges and the state has
+    steps 1-2 done on it (``prepared``; :func:`refined_state`; ``cache``: from the state
+    cache where it has them, ``options`` the PETSc options in force, which key it)."""
     from petsc4py import PETSc
     comm = comm or PETSc.COMM_WORLD
     if writer is None:
@@ -77,43 +81,91 @@ def new_state(scene, comm=None, writer=None, say=None, options=None, cache=False
     say = say or Progress(comm, scene.output.progress)
     if scene.model != "seal":
         return RunState(scene, None, writer, say, comm)
-    refine, base = None, None
     if scene.mesh.h_edge > 0.0:
-        refine, base = refine_at_edges(scene, comm, say, options, cache)
-    state = RunState(scene, model_from_scene(scene, comm, refine), writer, say, comm)
-    if base is not None:
-        state.counters.add(base.counters)
-        state.parts["mesh_refinement"] = base.parts.pop("mesh_refinement")
-    return state
+        return refined_state(scene, comm, writer, say, options, cache)
+    return RunState(scene, model_from_scene(scene, comm), writer, say, comm)
 
 
-def refine_at_edges(scene, comm, say, options=None, cache=False):
-    """Steps 1-2 of ``scene`` on its own mesh (``mesh.h_edge`` off, no ``[start]`` state;
-    with ``cache`` from the state cache where it has them), and the refinement at the
-    pressurised contact's edges (:mod:`sealts.mesh.contact_edges`): (refine or None, that
-    state, whose parts hold the summary's ``mesh_refinement``)."""
+# steps 1-2 on refined meshes at most, each pass refining where the last one's edges fell
+# outside the spans
+REFINE_PASSES = 3
+
+
+def refined_state(scene, comm, writer, say, options=None, cache=False):
+    """The state of a ``mesh.h_edge`` scene. Where the state cache's entry (``cache``) or
+    the ``[start] state`` file holds the points its mesh was refined at, the mesh is built
+    from them and steps 1-2 read back by the scene's steps. Otherwise steps 1-2 run on the
+    scene's own mesh (from the state cache where it has them), the mesh is refined around
+    the pressurised contact's edges (:mod:`sealts.mesh.contact_edges`) and steps 1-2 run
+    on it; where the contact's edges then lie outside the refined spans (the seal settled
+    elsewhere), they are refined too and steps 1-2 run again, at most ``REFINE_PASSES``
+    times. The last pass's state is returned with steps 1-2 done (``prepared``); all
+    passes' work counts in its counters, the summary's ``mesh_refinement`` says where."""
     from dataclasses import replace
+
+    import numpy as np
+
+    from ..io.writer import ProfileRecorder
     from ..mesh.contact_edges import edge_refinement
+    from ..scene import SceneError
+    from .state import read_refinement
     m = scene.mesh
+    entry = StateCache.for_scene(scene, options) if cache else None
+    stored = scene.start.state or (entry.path if entry is not None and entry.hit() else "")
+    if stored:
+        refine = read_refinement(stored)
+        if refine is None and scene.start.state:
+            raise SceneError(f"start.state: {stored} holds no mesh refinement for mesh.h_edge "
+                             "(saved without it, or by an older sealts); run steps 1-2 again")
+        if refine is not None and refine[1] != m.h_edge:
+            raise SceneError(f"start.state: {stored} was saved with mesh.h_edge = "
+                             f"{refine[1]:g} mm, not {m.h_edge:g} mm")
+        if refine is not None:
+            state = RunState(scene, model_from_scene(scene, comm, refine), writer, say, comm,
+                             refine=refine)
+            state.parts["mesh_refinement"] = {"h_edge": m.h_edge, "edge_span": m.edge_span,
+                                              "points": len(refine[0]), "from": str(stored)}
+            return state
     base = replace(scene, mesh=replace(m, h_edge=0.0), start=replace(scene.start, state=""))
     say(f"mesh.h_edge = {m.h_edge:g} mm: steps 1-2 on the scene's mesh first, to find the "
         "contact's edges", force=True)
     st = run_steps(steps_1_2(base, StateCache.for_scene(base, options) if cache else None),
-                   new_state(base, comm, None, say))
-    refine, edges = edge_refinement(st.model, st.t, st.u, m.h_edge, m.edge_span)
-    st.parts["mesh_refinement"] = {
-        "h_edge": m.h_edge, "edge_span": m.edge_span,
-        "points": 0 if refine is None else len(refine[0]), "edges_reference_mm": edges,
-        "base_nodes": int(st.model.mesh.X.shape[0]),
-        "base_steps_1_2": st.parts.get("steps_1_2", {}).get("from", "computed")}
-    if refine is None:
-        say("mesh.h_edge: the seal does not touch the rod after steps 1-2; the mesh is not "
-            "refined", force=True)
-    else:
-        say("contact edges at (r, z) = " + ", ".join(f"({r:.4f}, {z:.4f})" for r, z in edges)
-            + f" mm; refined to {m.h_edge:g} mm over {m.edge_span:g} mm each side",
+                   RunState(base, model_from_scene(base, comm), ProfileRecorder(), say, comm))
+    record = {"h_edge": m.h_edge, "edge_span": m.edge_span,
+              "base_nodes": int(st.model.mesh.X.shape[0]),
+              "base_steps_1_2": st.parts.get("steps_1_2", {}).get("from", "computed"),
+              "passes": []}
+    refined, points = [], np.zeros((0, 2))
+    for k in range(REFINE_PASSES + 1):
+        add, edges, new = edge_refinement(st.model, st.t, st.u, m.h_edge, m.edge_span,
+                                          refined)
+        record["passes"].append({"nodes": int(st.model.mesh.X.shape[0]),
+                                 "edges_reference_mm": edges, "refined": new})
+        refined += new
+        if add is None or k == REFINE_PASSES:
+            break
+        points = np.vstack([points, add[0]])
+        say(("contact edges at (r, z) = " if k == 0 else
+             "the contact's edges moved out of the refined spans; refined again at (r, z) = ")
+            + ", ".join(f"({r:.4f}, {z:.4f})" for r, z in new)
+            + f" mm: {m.h_edge:g} mm over {m.edge_span:g} mm each side", force=True)
+        nxt = RunState(scene, model_from_scene(scene, comm, (points, m.h_edge)),
+                       ProfileRecorder(), say, comm, refine=(points, m.h_edge))
+        nxt.counters.add(st.counters)
+        st = run_steps(steps_1_2(scene), nxt)
+    if not len(points):
+        say("mesh.h_edge: no contact edge away from the groove's walls after steps 1-2; "
+            "the mesh is not refined", force=True)
+    record.update(points=len(points), edges_reference_mm=record["passes"][-1]
+                  ["edges_reference_mm"], converged=add is None)
+    if add is not None:
+        say(f"warning: mesh.h_edge: after {REFINE_PASSES} refinements the contact's edges "
+            "still moved out of the refined spans; the run goes on with the last mesh",
             force=True)
-    return refine, st
+    st.writer.replay(writer)
+    st = replace(st, scene=scene, writer=writer, prepared=True)
+    st.parts["mesh_refinement"] = record
+    return st
 
 
 def run_steps(steps, state):
@@ -130,7 +182,8 @@ def prepare(scene, comm=None, writer=None, say=None):
     the state they saved: the RunState with u, t and the front."""
     if scene.model != "seal":
         raise ValueError("prepare: steps 1-2 are a seal scene's (model = 'seal')")
-    return run_steps(steps_1_2(scene), new_state(scene, comm, writer, say))
+    state = new_state(scene, comm, writer, say)
+    return run_steps(steps_1_2(scene, prepared=state.prepared), state)
 
 
 def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=None):
@@ -142,9 +195,10 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
         state = new_state(scene, comm, writer, options=petsc_options, cache=True)
     except (Exception, Interrupted) as e:
         if scene.model == "seal" and scene.mesh.h_edge > 0.0 and writer.root:
-            # steps 1-2 on the scene's own mesh (mesh.h_edge) failed: the run says so
+            # steps 1-2 on the scene's mesh or a refined one (mesh.h_edge) failed: the run
+            # says so
             writer.summary({"status": "interrupted" if isinstance(e, Interrupted) else "failed",
-                            "error": f"steps 1-2 on the scene's mesh (mesh.h_edge): "
+                            "error": f"steps 1-2 (mesh.h_edge's refinement passes): "
                                      f"{type(e).__name__}: {e}".splitlines()[0],
                             "scene": scene.name, "source": scene.source,
                             "wall_time_s": time.perf_counter() - t_wall})
@@ -172,7 +226,7 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
         writer.summary(summary)
         return summary
 
-    steps = steps_for(scene, command, resume, petsc_options)
+    steps = steps_for(scene, command, resume, petsc_options, state.prepared)
     try:
         run_steps(steps, state)
     except (Exception, Interrupted) as e:

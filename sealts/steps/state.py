@@ -7,8 +7,8 @@ pressure-penetration front (``load``), the solvers' counters, and what the summa
 (``results``, the step blocks in ``parts``). The model holds no history of its own.
 
 ``save`` writes the state of steps 1-2 as ``state.h5`` (the displacement per node, the mesh
-coordinates it belongs to, the front's reach; p_in, p_crit, t and the results as
-attributes); :class:`sealts.steps.restart.Restart` reads it back in place of those steps.
+coordinates it belongs to, the front's reach, the points a ``mesh.h_edge`` mesh was refined
+at; p_in, p_crit, t and the results as attributes); :class:`sealts.steps.restart.Restart` reads it back in place of those steps.
 ``fork`` copies a state for a sweep.
 """
 import copy
@@ -36,6 +36,8 @@ class RunState:
     results: dict = field(default_factory=dict)  # the contact's key numbers at the end
     parts: dict = field(default_factory=dict)    # summary blocks of the steps: hold, stroke
     done: list = field(default_factory=list)     # names of the steps run
+    refine: tuple | None = None                  # (points, h) the mesh was refined at
+    prepared: bool = False                       # steps 1-2 done with the mesh's refinement
 
     @property
     def protocol(self):
@@ -67,12 +69,30 @@ class RunState:
             arrays["front_reach"] = np.asarray(self.load.reach, float)
             arrays["front_entries"] = np.asarray(self.load.entries, np.int64)
             attrs["p_crit"] = self.load.p_crit
+        if self.refine is not None:   # mesh.h_edge: the mesh is rebuilt from these points
+            arrays["refine_points"] = np.asarray(self.refine[0], float)
+            attrs["refine_h"] = float(self.refine[1])
         return arrays, attrs
 
     def save(self, path):
         """Write the state (rank 0) as an HDF5 file, whole: a temporary file renamed into
         place, so a reader never sees half a state."""
         self.writer.state(*self.file_data(), name=path)
+
+
+def read_refinement(path):
+    """(points, h) a state file's mesh was refined at (``mesh.h_edge``), or None where it
+    was not; SceneError (one line) where the file is not a state file."""
+    import h5py
+
+    from ..scene import SceneError
+    try:
+        with h5py.File(path, "r") as f:
+            if "refine_points" not in f:
+                return None
+            return f["refine_points"][()], float(f.attrs["refine_h"])
+    except (OSError, KeyError) as e:
+        raise SceneError(f"start.state: {path} is not a sealts state file ({e})") from None
 
 
 def read_state(path):
