@@ -96,7 +96,7 @@ from ..film.odd_even import ODD_EVEN_STEPS, ODD_EVEN_WARN, odd_even, odd_even_no
 from ..film.seal_film import LeakageTerm, SealFilmTerm
 from ..film.seal_paper_film import PaperLeakageTerm, SealPaperFilmTerm
 from ..solid.moving_front import MovingFront
-from ..solid.pressure import front_drift
+from ..solid.pressure import front_drift, settle
 from ..solid.stabilisation import SnapStabilisation
 from ..solid.term import SolidTerm
 from ..solid.viscoelastic_solid import ViscoelasticSolid
@@ -347,17 +347,16 @@ class StrokeProblem:
         side as a pressure load, the film's pressure there is another (the coarse O-ring at
         20 MPa: the groove-side front 0.7 edges short of its target). Front update and the
         start's solve in turn until a front would move less than ``tol`` edges (as step
-        2's ``settle_front``); the rod side's front is the film's and stays."""
-        load = self.load
-        for _ in range(max_updates):
-            kept = list(load.reach)
-            moved = load.update(self.node_contact_pressure(0.0, U), 0.0)
-            load.check_blow_by(0.0)
-            if moved < tol:
-                load.set_reach(kept)
-                break
-            U = start.solve_steady(U, 0.0)
-        return U
+        2's, :func:`sealts.solid.pressure.settle`); the rod side's front is the film's and
+        stays."""
+        state = {"U": U}
+
+        def solve():
+            state["U"] = start.solve_steady(state["U"], 0.0)
+
+        settle(self.load, 0.0, lambda: self.node_contact_pressure(0.0, state["U"]), solve,
+               tol, max_updates)
+        return state["U"]
 
     def output_terms(self):
         """The viscoelastic solid and Prony terms over every cell in serial dofs, for the

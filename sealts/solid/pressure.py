@@ -313,6 +313,51 @@ def front_drift(load, contact_pressure_at_nodes, t):
     return float(max(abs(a - b) for a, b in zip(target, load.reach)))
 
 
+def settle(load, t, contact_pressure, solve, tol=1e-4, max_updates=30):
+    """Front update and solve in turn at time t, from an equilibrium with the present front,
+    until the fronts would move by less than ``tol`` edges in all; the state keeps the front
+    it was solved with. ``contact_pressure()``: the nodal wall contact pressures of the
+    present state, ``solve()``: the equilibrium with the present front. Returns (edges the
+    fronts would still move, the index of the last update: max_updates - 1 where they did
+    not settle).
+
+    Each front moves to its target, except one caught in a two-cycle: its target is the
+    position it came from (within tol), each of two positions' equilibria pointing at the
+    other (met on micrometre edges, where the next node's contact pressure passes the
+    wetting margin as the front reaches it). That front is bisected between the two by the
+    sign of its way to the target, and settles where the target turns, to within tol edges
+    (counted as its move)."""
+    n = len(load.reach)
+    prev, bracket = [None] * n, [None] * n
+    moved = 0.0
+    for k in range(max_updates):
+        kept = list(load.reach)
+        target = load.target_reach(contact_pressure(), t)
+        load.set_reach(target)
+        load.check_blow_by(t)
+        new, moved = [], 0.0
+        for j, (x, y) in enumerate(zip(kept, target)):
+            d = y - x
+            if bracket[j] is None and prev[j] is not None and abs(d) > tol \
+                    and abs(y - prev[j]) <= tol:
+                bracket[j] = [min(x, y), max(x, y)]           # a two-cycle
+            b = bracket[j]
+            if b is None or abs(d) <= tol:
+                new.append(y)
+                moved += abs(d)
+            else:
+                b[0 if d > 0.0 else 1] = x
+                new.append(x if b[1] - b[0] < tol else 0.5 * (b[0] + b[1]))
+                moved += b[1] - b[0]
+            prev[j] = x
+        if moved < tol:
+            load.set_reach(kept)
+            return moved, k
+        load.set_reach(new)
+        solve()
+    return moved, max_updates - 1
+
+
 class RelaxedFront(Term):
     """The front's post-step hook for a long transient run (the hold): each front moves by
     omega times its way to ``target_reach``, at most ``max_advance`` edges forward. omega

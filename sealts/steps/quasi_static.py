@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..core import Counters, Observer, SolveError
+from ..solid.pressure import settle
 from .pseudo_time import PseudoTime
 
 
@@ -81,24 +82,24 @@ def static(model, extra, u, t, counters):
 
 def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30):
     """Front update and static solve in turn, from the equilibrium ``eq`` at t, until the
-    front moves by less than ``tol`` edges; the state keeps the front it was solved with.
-    A static solve that fails falls back to the stabilised driver on the window after t
-    (:class:`PseudoTime`). Returns (equilibrium, edges the front would still move,
-    updates made)."""
-    contact = model.node_contact_pressure
-    for k in range(max_updates):
-        kept = list(load.reach)
-        moved = load.update(contact(t, eq.u), t)
-        load.check_blow_by(t)
-        if moved < tol:
-            load.set_reach(kept)
-            break
+    front moves by less than ``tol`` edges (:func:`sealts.solid.pressure.settle`, which
+    halves the moves of a front flipping between two positions); the state keeps the front
+    it was solved with. A static solve that fails falls back to the stabilised driver on the
+    window after t (:class:`PseudoTime`). Returns (equilibrium, edges the front would still
+    move, updates made)."""
+    state = {"eq": eq}
+
+    def solve():
+        e = state["eq"]
         try:
-            eq.u, eq.udot = static(model, [load], eq.u, t, eq.counters), None
+            e.u, e.udot = static(model, [load], e.u, t, e.counters), None
         except SolveError:
-            again = quasi_static(model, [load], eq.u, PseudoTime.window(t), dt0)
-            eq = Equilibrium(again.u, again.udot, eq.counters + again.counters)
-    return eq, moved, k
+            again = quasi_static(model, [load], e.u, PseudoTime.window(t), dt0)
+            state["eq"] = Equilibrium(again.u, again.udot, e.counters + again.counters)
+
+    moved, k = settle(load, t, lambda: model.node_contact_pressure(t, state["eq"].u), solve,
+                      tol, max_updates)
+    return state["eq"], moved, k
 
 
 class RodProgress(Observer):

@@ -1,0 +1,67 @@
+"""Steps 1-2's front settling (sealts.solid.pressure.settle): front update and solve in turn.
+
+What is asserted, on a load whose target reach is a given function of its reach (closed
+forms, no seal):
+
+* where the target moves continuously with the front (contracting, one way or
+  alternating), the fronts move to their targets, update by update, as the plain fixed-point
+  iteration does, and stop within tol of the fixed point;
+* where each of two positions points at the other (the target jumps across the front, or
+  its slope is -1: the plain iteration flips between them for ever, as on micrometre
+  edges), the front is bisected onto the jump or the fixed point and settles there within
+  tol, well within the updates allowed.
+"""
+import pytest
+
+from sealts.solid.pressure import settle
+
+
+class Load:
+    """Two fronts; front 0's target is f(reach 0), front 1 stays."""
+
+    def __init__(self, f, x0):
+        self.f, self.reach = f, [x0, 5.0]
+
+    def target_reach(self, contact, t):
+        return [self.f(self.reach[0]), self.reach[1]]
+
+    def set_reach(self, reach):
+        self.reach = list(reach)
+
+    def check_blow_by(self, t):
+        pass
+
+
+def run(f, x0, tol=1e-4):
+    load, path = Load(f, x0), []
+    moved, k = settle(load, 0.0, lambda: None, lambda: path.append(load.reach[0]), tol)
+    return load.reach[0], moved, k, path
+
+
+def plain(f, x0, tol=1e-4, n=30):
+    path, x = [], x0
+    for _ in range(n):
+        y = f(x)
+        if abs(y - x) < tol:
+            break
+        x = y
+        path.append(x)
+    return path
+
+
+@pytest.mark.parametrize("f", [lambda x: 0.5 * x + 1.0,                  # one way
+                               lambda x: -0.5 * (x - 2.0) + 2.0])        # alternating
+def test_a_continuous_target_is_followed_as_by_the_plain_iteration(f):
+    x, moved, k, path = run(f, 0.0)
+    assert path == plain(f, 0.0)
+    assert abs(x - 2.0) < 2e-4 and moved < 1e-4 and k == len(path)
+
+
+@pytest.mark.parametrize("f, x_star", [
+    (lambda x: x + 1.0 if x < 1.2345 else x - 1.0, 1.2345),   # a jump across the front
+    (lambda x: 3.4 - x, 1.7)])                               # slope -1: a two-cycle
+def test_a_front_flipping_between_two_positions_settles_between_them(f, x_star):
+    assert len(plain(f, 0.7)) == 30                # the plain iteration never settles
+    x, moved, k, path = run(f, 0.7)
+    assert abs(x - x_star) < 1e-4
+    assert moved < 1e-4 and k < 29
