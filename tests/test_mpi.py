@@ -98,6 +98,29 @@ def test_mounted_and_pressurised_seal_on_two_ranks(tmp_path):
 
 @pytest.mark.mpi
 @pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
+def test_edge_refinement_on_two_ranks_is_the_serial_one(tmp_path):
+    """mesh.h_edge on 2 ranks: the refinement passes (steps 1-2 on the scene's mesh, then
+    on meshes refined at the contact's edges until they hold them) run on rank 0 alone, so
+    the mesh does not depend on the number of ranks: the same passes, edges and nodes as
+    one rank, and the pressurised state on it matches."""
+    text = config_text("oring_pressurise",
+                       mesh={"h_contact": 0.1, "h_bulk": 0.4, "h_edge": 0.01,
+                             "cache": str(tmp_path)})
+    cfg = tmp_path / "coarse.toml"
+    cfg.write_text(text)
+    out = {n: _summary(n, cfg, tmp_path / f"r{n}") for n in (1, 2)}
+    a, b = out[1]["mesh_refinement"], out[2]["mesh_refinement"]
+    assert b["passes_on"] == "rank 0" and out[2]["ranks"] == 2
+    assert out[2]["nodes"] == out[1]["nodes"] > a["base_nodes"]
+    assert len(b["passes"]) == len(a["passes"])
+    for pa, pb in zip(a["passes"], b["passes"]):
+        assert np.allclose(pb["edges_reference_mm"], pa["edges_reference_mm"], atol=1e-9)
+    for key in ("contact_force_total", "contact_width", "p_contact_max"):
+        assert out[2]["results"][key] == pytest.approx(out[1]["results"][key], rel=1e-6)
+
+
+@pytest.mark.mpi
+@pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
 def test_viscoelastic_hold_on_two_ranks(tmp_path):
     """The coarse O-ring's viscoelastic hold (two Prony terms, both active; 1 -> 3 MPa,
     held to 0.05 s) on 2 ranks matches 1 rank: the Prony dofs live on each rank's own

@@ -100,13 +100,10 @@ def refined_state(scene, comm, writer, say, options=None, cache=False):
     on it; where the contact's edges then lie outside the refined spans (the seal settled
     elsewhere), they are refined too and steps 1-2 run again, at most ``REFINE_PASSES``
     times. The last pass's state is returned with steps 1-2 done (``prepared``); all
-    passes' work counts in its counters, the summary's ``mesh_refinement`` says where."""
+    passes' work counts in its counters, the summary's ``mesh_refinement`` says where.
+    Under MPI the passes run on rank 0 (:func:`_refined_on_rank_0`)."""
     from dataclasses import replace
 
-    import numpy as np
-
-    from ..io.writer import ProfileRecorder
-    from ..mesh.contact_edges import edge_refinement
     from ..scene import SceneError
     from .state import read_refinement
     m = scene.mesh
@@ -126,6 +123,53 @@ def refined_state(scene, comm, writer, say, options=None, cache=False):
             state.parts["mesh_refinement"] = {"h_edge": m.h_edge, "edge_span": m.edge_span,
                                               "points": len(refine[0]), "from": str(stored)}
             return state
+    if comm.getSize() > 1:
+        return _refined_on_rank_0(scene, comm, writer, say, options, cache)
+    st, record, points = _refine_passes(scene, comm, say, options, cache)
+    st.writer.replay(writer)
+    st = replace(st, scene=scene, writer=writer, prepared=True)
+    st.parts["mesh_refinement"] = record
+    return st
+
+
+def _refined_on_rank_0(scene, comm, writer, say, options, cache):
+    """Under MPI: the passes run on rank 0 alone, serially, and the ranks build the mesh at
+    its points. The seal's roll is weakly held in steps 1-2, and a distributed solve, which
+    differs from the serial one in round-off, can settle it elsewhere and so refine other
+    points: the mesh would depend on the number of ranks. Steps 1-2 then run on the ranks
+    (or come from the state cache)."""
+    from petsc4py import PETSc
+    mpi = comm.tompi4py()
+    out = None
+    if comm.getRank() == 0:
+        try:
+            st, record, points = _refine_passes(scene, PETSc.COMM_SELF, say, options, cache)
+            out = (points, record, st.counters)
+        except (Exception, Interrupted) as e:      # every rank stops, with rank 0's reason
+            out = e
+    out = mpi.bcast(out, root=0)
+    if isinstance(out, BaseException):
+        raise out
+    points, record, counters = out
+    refine = (points, scene.mesh.h_edge) if len(points) else None
+    state = RunState(scene, model_from_scene(scene, comm, refine), writer, say, comm,
+                     refine=refine)
+    state.counters.add(counters)
+    state.parts["mesh_refinement"] = {**record, "passes_on": "rank 0"}
+    return state
+
+
+def _refine_passes(scene, comm, say, options, cache):
+    """Steps 1-2 on the scene's mesh, then on meshes refined at the contact's edges until
+    they lie inside the refined spans (:func:`refined_state`): (the last pass's state, the
+    summary's ``mesh_refinement`` record, the refinement points)."""
+    from dataclasses import replace
+
+    import numpy as np
+
+    from ..io.writer import ProfileRecorder
+    from ..mesh.contact_edges import edge_refinement
+    m = scene.mesh
     base = replace(scene, mesh=replace(m, h_edge=0.0), start=replace(scene.start, state=""))
     say(f"mesh.h_edge = {m.h_edge:g} mm: steps 1-2 on the scene's mesh first, to find the "
         "contact's edges", force=True)
@@ -162,10 +206,7 @@ def refined_state(scene, comm, writer, say, options=None, cache=False):
         say(f"warning: mesh.h_edge: after {REFINE_PASSES} refinements the contact's edges "
             "still moved out of the refined spans; the run goes on with the last mesh",
             force=True)
-    st.writer.replay(writer)
-    st = replace(st, scene=scene, writer=writer, prepared=True)
-    st.parts["mesh_refinement"] = record
-    return st
+    return st, record, points
 
 
 def run_steps(steps, state):
