@@ -66,9 +66,9 @@ friction 67.3-67.5 / 62.9-63.2 on every one.
   is 5 % of it. Coarse meshes under-resolve the inlet of the soft-EHL contact, where the
   gap closes from microns to the film thickness within ~0.1 mm; their gap zig-zags from
   node to node and their films are thinner (0.70 against 0.78 um at 500 mm/s), so they
-  carry less out. The default 0.025 / 0.2 is within 1.6 % (net) and 0.7 % (transports)
-  of the overkill reference of benchmarks/work_precision_reference.json, but that is
-  luck: the same element sizes with the nodes placed elsewhere (other grading distances,
+  carry less out. The default 0.025 / 0.2 is within 0.5 % (net and transports) of the
+  overkill reference of benchmarks/work_precision_reference.json (the paper's mesh, the
+  mean of three placements, which themselves spread by 1.8 %), but that is luck: the same element sizes with the nodes placed elsewhere (other grading distances,
   mirror-symmetric) give 12.2 to 17.9 mm^3 (README, "Where gmsh puts the nodes"), so
   this value pins the computation on this mesh, not the physics, which it knows to some
   25 %.
