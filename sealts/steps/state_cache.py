@@ -124,8 +124,9 @@ class SaveToCache(Step):
         state.parts["steps_1_2"] = {"from": "computed", "cache": str(self.cache.path)}
         if self.cache.note:
             state.say(self.cache.note, force=True)
-        if not state.writer.root:
-            return
+        if state.comm is not None and state.comm.getRank() != 0:
+            return               # rank 0 writes (also where the run's writer writes nothing:
+                                 # the scene's own mesh's steps 1-2 before mesh.h_edge)
         from ..io.writer import write_h5
         try:
             self.cache.path.parent.mkdir(parents=True, exist_ok=True)
