@@ -141,3 +141,29 @@ def test_the_pressurised_contact_ends_inside_the_refined_spans(tmp_path):
     run_steps(steps_1_2(s2), again)
     assert np.array_equal(again.model.mesh.X, st.model.mesh.X)
     assert np.array_equal(again.u, st.u)
+
+
+def test_a_failure_on_the_refined_mesh_says_the_scene_s_own_mesh_ran(tmp_path, monkeypatch):
+    """Steps 1-2 that fail on a refined mesh (at 20-30 MPa micrometre elements at the
+    pressure-side edge are crushed) stop with their own message and what to do: the
+    scene's own mesh went through, so the scene runs without mesh.h_edge."""
+    from sealts.core import SolveError
+    from sealts.steps import prepare
+    from sealts.steps.pressurise import Pressurise
+    run = Pressurise.run
+
+    def crushed_when_refined(self, state):
+        if state.refine is not None:
+            raise SolveError("at t = 4 s, 3 element(s) of the seal invert")
+        return run(self, state)
+
+    monkeypatch.setattr(Pressurise, "run", crushed_when_refined)
+    s = scene("oring_stroke", mesh={"h_contact": H_CONTACT, "h_bulk": H_BULK, "h_edge": 0.01,
+                                    "cache": str(tmp_path)},
+              output={"progress": False})
+    with pytest.raises(SolveError) as e:
+        prepare(s)
+    msg = str(e.value)
+    assert msg.startswith("at t = 4 s, 3 element(s) of the seal invert (on the mesh refined")
+    assert "mesh.h_edge = 0.01 mm" in msg and "scene's own mesh" in msg
+    assert "\n" not in msg

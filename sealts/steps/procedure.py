@@ -13,6 +13,7 @@ in this package, imported here and put in ``steps_for``.
 """
 import time
 
+from ..core import SolveError
 from ..interrupt import Interrupted
 from ..io.fields import write_fields
 from ..io.progress import Progress
@@ -196,7 +197,15 @@ def _refine_passes(scene, comm, say, options, cache):
         nxt = RunState(scene, model_from_scene(scene, comm, (points, m.h_edge)),
                        ProfileRecorder(), say, comm, refine=(points, m.h_edge))
         nxt.counters.add(st.counters)
-        st = run_steps(steps_1_2(scene), nxt)
+        try:
+            st = run_steps(steps_1_2(scene), nxt)
+        except SolveError as e:          # the scene's own mesh went through: say so
+            raise SolveError(
+                f"{e} (on the mesh refined to mesh.h_edge = {m.h_edge:g} mm at the contact's "
+                "edges; steps 1-2 ran on the scene's own mesh: without mesh.h_edge, or with "
+                "a larger one, this scene runs; at 20-30 MPa micrometre elements at the "
+                "pressure-side edge are crushed, README \"The film's inlets resolved\")"
+            ) from None
     if not len(points):
         say("mesh.h_edge: no contact edge away from the groove's walls after steps 1-2; "
             "the mesh is not refined", force=True)
