@@ -400,10 +400,12 @@ def plot(rows, fit, path, when):
 REF_QUANTITIES = ("net", "out", "inn", "work", "peak_out", "peak_in", "h_min")
 
 
-def reference_from(runs):
+def reference_from(runs, taken=False):
     """The reference from runs of its setting at REF_GRADINGS: each quantity's mean over
     the placements, the placements' own values and their spread ((max - min) / |mean|);
-    the film profile is the mean of theirs on the first one's positions."""
+    the film profile is the mean of theirs on the first one's positions. ``taken``: the
+    runs were made before (``--from-run``), so the machine's load now says nothing of
+    them."""
     keep = {k: float(np.mean([r[k] for r in runs])) for k in REF_QUANTITIES}
     keep["spread"] = {k: float(np.ptp([r[k] for r in runs]) / abs(keep[k]))
                       for k in REF_QUANTITIES}
@@ -416,7 +418,9 @@ def reference_from(runs):
                        f"defaults; the mean over grading distances "
                        f"{', '.join(f'{g:g}' for g in REF_GRADINGS)} mm")
     keep["date"] = datetime.now(timezone.utc).strftime("%Y-%m-%d")
-    keep["machine"] = machine()
+    keep["machine"] = (f"{platform.node()}, {os.cpu_count()} cores, Python "
+                       f"{platform.python_version()}; taken from runs made before (--from-run: "
+                       "the load they ran under is not known here)") if taken else machine()
     profiles = [r.get("profile") for r in runs]
     if all(q is not None for q in profiles):
         y = profiles[0][:, 0]
@@ -490,7 +494,7 @@ def main():
             runs = [run(f"reference, grading {g:g} mm", scene_text((0.01, 0.05), grading=g),
                         ["-stroke_ts_rtol", "1e-4"], work / f"reference_{g:g}", log=False,
                         limit=REF_LIMIT) for g in REF_GRADINGS]
-        write_reference(reference_from(runs))
+        write_reference(reference_from(runs, taken=bool(a.from_run)))
         return
     if not REFERENCE.exists():
         sys.exit(f"no reference {REFERENCE}: run with --reference first")
