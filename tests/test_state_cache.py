@@ -101,3 +101,25 @@ def test_a_second_run_mounts_nothing_and_strokes_the_same(tmp_path):
     assert fourth["stroke"]["leakage_out"] == first["stroke"]["leakage_out"]
     fifth, _ = _run(tmp_path, "fifth")
     assert fifth["steps_1_2"]["from"] == "cache"
+
+
+def test_rank_0_writes_the_entry_whatever_the_state_s_writer(tmp_path):
+    """The cache entry is rank 0's to write, also where the state's writer writes nothing:
+    mesh.h_edge runs steps 1-2 on the scene's own mesh with such a writer, and their entry
+    was never written, so every h_edge study remounted. A state saved that way reads back
+    as the state it was."""
+    import numpy as np
+
+    from sealts.steps import new_state
+    from sealts.steps.state import read_state
+    from sealts.steps.state_cache import SaveToCache, StateCache
+    s = scene("oring_stroke", mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
+              output={"progress": False})
+    st = new_state(s)
+    assert not st.writer.root                 # a NullWriter
+    st.u = np.linspace(0.0, 1e-3, st.model.n)
+    entry = StateCache(s)
+    SaveToCache(entry).run(st)
+    un, X, _, attrs = read_state(entry.path)
+    assert np.array_equal(X, st.model.mesh.X) and np.array_equal(un, st.u[st.model.udofs])
+    assert attrs["p_in"] == s.fluid.p_in
