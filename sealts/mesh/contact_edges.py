@@ -21,7 +21,7 @@ edge: friction shears the seal during a stroke and moves the edges' material poi
 few hundredths of a millimetre. Near a groove side wall it refines nothing
 (:func:`edge_refinement`). Steps 1-2 on the refined mesh can settle the seal elsewhere (its
 roll is weakly held); where an edge then lies outside the spans, it is refined as well and
-steps 1-2 run again (``sealts.steps.procedure.refine_at_edges``).
+steps 1-2 run again (:func:`sealts.steps.procedure.refined_state`).
 """
 import numpy as np
 

@@ -83,8 +83,8 @@ def static(model, extra, u, t, counters):
 def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30):
     """Front update and static solve in turn, from the equilibrium ``eq`` at t, until the
     front moves by less than ``tol`` edges (:func:`sealts.solid.pressure.settle`, which
-    halves the moves of a front flipping between two positions); the state keeps the front
-    it was solved with. A static solve that fails falls back to the stabilised driver on the
+    bisects a front caught flipping between two positions); the state keeps the front it
+    was solved with. A static solve that fails falls back to the stabilised driver on the
     window after t (:class:`PseudoTime`). Returns (equilibrium, edges the front would still
     move, updates made)."""
     state = {"eq": eq}

@@ -8,7 +8,8 @@ pressure-penetration front (``load``), the solvers' counters, and what the summa
 
 ``save`` writes the state of steps 1-2 as ``state.h5`` (the displacement per node, the mesh
 coordinates it belongs to, the front's reach, the points a ``mesh.h_edge`` mesh was refined
-at; p_in, p_crit, t and the results as attributes); :class:`sealts.steps.restart.Restart` reads it back in place of those steps.
+at; p_in, p_crit, t and the results as attributes); :class:`sealts.steps.restart.Restart`
+reads it back in place of those steps.
 ``fork`` copies a state for a sweep.
 """
 import copy
