@@ -352,7 +352,7 @@ def plot(rows, fit, path, when):
     names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4", "mesh": "mesh (contact / bulk)",
              "bdf": "BDF order 1 / 2", "theta": "Crank-Nicolson", "film": "paper film scheme",
              "lu": "UMFPACK in place of PETSc's LU",
-             "targets": "paper mesh at the defaults (the reference's mesh: time error only)",
+             "targets": "paper mesh at the defaults (one of the reference's 3 placements)",
              "before": "BDF 2 and rtol 1e-3 (the defaults before)",
              "layer": "mesh with a 0.1 mm layer at h_contact",
              "plain": "default without -log_view",
