@@ -9,7 +9,10 @@ forms, no seal):
 * where each of two positions points at the other (the target jumps across the front, or
   its slope is -1: the plain iteration flips between them for ever, as on micrometre
   edges), the front is bisected onto the jump or the fixed point and settles there within
-  tol, well within the updates allowed.
+  tol, well within the updates allowed;
+* so is a front that visits three positions in turn (met on the refined mesh of
+  ``mesh.h_edge``, carried from the scene's own mesh: 97.73 -> 101.32 -> 98.92 -> 97.73
+  edges), which no test of "the target is where it came from" catches.
 """
 import pytest
 
@@ -65,3 +68,13 @@ def test_a_front_flipping_between_two_positions_settles_between_them(f, x_star):
     x, moved, k, path = run(f, 0.7)
     assert abs(x - x_star) < 1e-4
     assert moved < 1e-4 and k < 29
+
+
+def test_a_front_cycling_through_three_positions_settles_where_its_target_turns():
+    def f(x):                         # 0 -> 2 -> 1 -> 0: up 2, down 1, down 1
+        return x + 2.0 if x < 0.5 else x - 1.0
+    assert plain(f, 0.0)[:6] == [2.0, 1.0, 0.0, 2.0, 1.0, 0.0]
+    assert len(plain(f, 0.0)) == 30                # the plain iteration never settles
+    x, moved, k, path = run(f, 0.0)
+    assert path[:2] == [2.0, 1.0]                  # followed while its way shrank
+    assert abs(x - 0.5) < 1e-4 and moved < 1e-4 and k < 29

@@ -321,14 +321,17 @@ def settle(load, t, contact_pressure, solve, tol=1e-4, max_updates=30):
     fronts would still move, the index of the last update: max_updates - 1 where they did
     not settle).
 
-    Each front moves to its target, except one caught in a two-cycle: its target is the
-    position it came from (within tol), each of two positions' equilibria pointing at the
-    other (met on micrometre edges, where the next node's contact pressure passes the
-    wetting margin as the front reaches it). That front is bisected between the two by the
-    sign of its way to the target, and settles where the target turns, to within tol edges
-    (counted as its move)."""
+    Each front moves to its target while its way there shrinks from update to update (as
+    the plain fixed-point iteration does, which converges where the target moves less than
+    the front). A front whose way stops shrinking cycles (met on micrometre edges, where the
+    next node's contact pressure passes the wetting margin as the front reaches it: two
+    positions each pointing at the other, or three in turn); once two of the positions it
+    visited point at each other (the lower one's target above it, the higher one's below:
+    :func:`_bracket`), it is bisected between the nearest such two by the sign of its way
+    at each midpoint, and settles where the target turns, to within tol edges (counted as
+    its move)."""
     n = len(load.reach)
-    prev, bracket = [None] * n, [None] * n
+    seen, way, bisect = [[] for _ in range(n)], [None] * n, [False] * n
     moved = 0.0
     for k in range(max_updates):
         kept = list(load.reach)
@@ -338,24 +341,33 @@ def settle(load, t, contact_pressure, solve, tol=1e-4, max_updates=30):
         new, moved = [], 0.0
         for j, (x, y) in enumerate(zip(kept, target)):
             d = y - x
-            if bracket[j] is None and prev[j] is not None and abs(d) > tol \
-                    and abs(y - prev[j]) <= tol:
-                bracket[j] = [min(x, y), max(x, y)]           # a two-cycle
-            b = bracket[j]
-            if b is None or abs(d) <= tol:
+            seen[j].append((x, d))
+            if not bisect[j] and way[j] is not None and abs(d) > tol \
+                    and abs(d) >= way[j] - tol:
+                bisect[j] = _bracket(seen[j]) is not None
+            way[j] = abs(d)
+            b = _bracket(seen[j]) if bisect[j] and abs(d) > tol else None
+            if b is None:
                 new.append(y)
                 moved += abs(d)
             else:
-                b[0 if d > 0.0 else 1] = x
                 new.append(x if b[1] - b[0] < tol else 0.5 * (b[0] + b[1]))
                 moved += b[1] - b[0]
-            prev[j] = x
         if moved < tol:
             load.set_reach(kept)
             return moved, k
         load.set_reach(new)
         solve()
     return moved, max_updates - 1
+
+
+def _bracket(seen):
+    """The nearest two positions (lo, hi), lo < hi, of the (position, way to its target)
+    pairs ``seen`` whose ways point at each other (lo's up, hi's down), or None."""
+    up = [x for x, d in seen if d > 0.0]
+    down = [x for x, d in seen if d < 0.0]
+    pairs = [(lo, hi) for lo in up for hi in down if lo < hi]
+    return min(pairs, key=lambda p: p[1] - p[0]) if pairs else None
 
 
 class RelaxedFront(Term):
