@@ -99,10 +99,10 @@ def test_mounted_and_pressurised_seal_on_two_ranks(tmp_path):
 @pytest.mark.mpi
 @pytest.mark.skipif(MPIEXEC is None, reason="mpiexec not found")
 def test_edge_refinement_on_two_ranks_is_the_serial_one(tmp_path):
-    """mesh.h_edge on 2 ranks: the refinement passes (steps 1-2 on the scene's mesh, then
-    on meshes refined at the contact's edges until they hold them) run on rank 0 alone, so
-    the mesh does not depend on the number of ranks: the same passes, edges and nodes as
-    one rank, and the pressurised state on it matches."""
+    """mesh.h_edge on 2 ranks: the refinement passes (steps 1-2 on the scene's mesh, their
+    state carried to meshes refined at the contact's edges until they hold them) run on
+    rank 0 alone, so the mesh does not depend on the number of ranks: the same passes,
+    edges and nodes as one rank; the ranks take rank 0's state and results."""
     text = config_text("oring_pressurise",
                        mesh={"h_contact": 0.1, "h_bulk": 0.4, "h_edge": 0.01,
                              "cache": str(tmp_path)})
@@ -117,6 +117,7 @@ def test_edge_refinement_on_two_ranks_is_the_serial_one(tmp_path):
         assert np.allclose(pb["edges_reference_mm"], pa["edges_reference_mm"], atol=1e-9)
     for key in ("contact_force_total", "contact_width", "p_contact_max"):
         assert out[2]["results"][key] == pytest.approx(out[1]["results"][key], rel=1e-6)
+    assert out[2]["analysis"] == out[1]["analysis"] == "mount + pressurise + transfer"
 
 
 @pytest.mark.mpi

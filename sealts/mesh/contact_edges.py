@@ -19,9 +19,10 @@ the chain's reference polyline (the seal as meshed, so the material points that 
 pressurised contact's edges are), ``h / 2`` apart over ``span`` to either side of each
 edge: friction shears the seal during a stroke and moves the edges' material points by a
 few hundredths of a millimetre. Near a groove side wall it refines nothing
-(:func:`edge_refinement`). Steps 1-2 on the refined mesh can settle the seal elsewhere (its
-roll is weakly held); where an edge then lies outside the spans, it is refined as well and
-steps 1-2 run again (:func:`sealts.steps.procedure.refined_state`).
+(:func:`edge_refinement`). The state carried to the refined mesh can settle its edges
+elsewhere (a coarse mesh places them only to within its elements); where an edge then lies
+outside the spans, it is refined as well and the state carried again
+(:func:`sealts.steps.procedure.refined_state`).
 """
 import numpy as np
 

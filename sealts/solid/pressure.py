@@ -222,6 +222,38 @@ class PressureLoad(Term):
             s0[self.dry] = s1[self.dry] = 0.0
         self.s0, self.s1 = s0, s1
 
+    def _walk(self, step):
+        """The loop's edges from the start one way (step 1 or -1), each as (near, far)."""
+        k = (self.start + (0 if step == 1 else -1) + step * np.arange(self.m)) % self.m
+        a, b = self.edges[k, 0], self.edges[k, 1]
+        return (a, b) if step == 1 else (b, a)
+
+    def front_points(self):
+        """The fronts' reference positions (r, z), one per ``reach``: where the wetted
+        part of the loop ends each way."""
+        out = []
+        for r, step in zip(self.reach, (1, -1)):
+            near, far = self._walk(step)
+            n = int(min(r, self.m - 1))
+            frac = min(r - n, 1.0)
+            out.append(self.X[near[n]] + frac * (self.X[far[n]] - self.X[near[n]]))
+        return np.array(out)
+
+    def reach_at(self, points):
+        """The reach whose fronts lie at the reference positions ``points`` (one per
+        way, (r, z)), nearest on this loop: another mesh's fronts (:meth:`front_points`)
+        carried to this one."""
+        reach = []
+        for P, step in zip(np.asarray(points, float), (1, -1)):
+            near, far = self._walk(step)
+            A, B = self.X[near], self.X[far]
+            d = B - A
+            tau = np.clip(np.einsum("kd,kd->k", P - A, d) / np.einsum("kd,kd->k", d, d),
+                          0.0, 1.0)
+            k = int(np.argmin(np.hypot(*(A + tau[:, None] * d - P).T)))
+            reach.append(k + float(tau[k]))
+        return reach
+
     def _weights(self, xa, xb):
         """2 pi int N_a r ds, 2 pi int N_b r ds over [s0, s1] (axisymmetric) or depth int N ds,
         and their derivatives by (r_a, r_b)."""

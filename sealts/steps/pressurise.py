@@ -45,21 +45,29 @@ class Pressurise(Step):
                                                 max_advance=FRONT_STEP)],
                           observers=[RodProgress(model, state.say)])
         eq, moved, updates = settle_front(model, load, eq, t1, dt)
-        state.u, state.udot, state.t, state.load = eq.u, eq.udot, t1, load
         state.counters.add(eq.counters)
-        res = model.results(t1, eq.u, eq.udot)
-        res["mounted"] = mounted
-        res["pressure_force_radial"], res["pressure_force_axial"] = \
-            model.pressure_resultant(load, t1, eq.u)
-        res["wetted_boundary_fraction"] = float(load.wet.mean())
-        # edges (fractions summed) the front would still move from the final state: 0 when
-        # front and equilibrium agree
-        res["front_change_edges"], res["front_updates"] = moved, updates
-        state.results = res
-        if moved >= 1e-4:
-            state.say(f"warning: the pressure-penetration front did not settle in "
-                      f"{updates + 1} updates (one more would move it {moved:.3g} edges); "
-                      "try a larger fluid.p_crit", force=True)
-        y, h, p = model.contact_profile(t1, eq.u)
-        state.writer.profile(t1, {"y": y, "h": h, "p_contact": p},
-                             label=f"pressurised to {p_in:g} MPa{back}, pseudo-time {t1:g}")
+        settled(state, eq, load, t1, moved, updates, mounted,
+                f"pressurised to {p_in:g} MPa{back}, pseudo-time {t1:g}")
+
+
+def settled(state, eq, load, t, moved, updates, mounted, label):
+    """The state, results and profile of steps 1-2's end: the equilibrium ``eq`` at t with
+    the settled front of ``load`` (it would still move ``moved`` edges after ``updates``
+    updates); ``mounted`` the mount's results."""
+    model = state.model
+    state.u, state.udot, state.t, state.load = eq.u, eq.udot, t, load
+    res = model.results(t, eq.u, eq.udot)
+    res["mounted"] = mounted
+    res["pressure_force_radial"], res["pressure_force_axial"] = \
+        model.pressure_resultant(load, t, eq.u)
+    res["wetted_boundary_fraction"] = float(load.wet.mean())
+    # edges (fractions summed) the front would still move from the final state: 0 when
+    # front and equilibrium agree
+    res["front_change_edges"], res["front_updates"] = moved, updates
+    state.results = res
+    if moved >= 1e-4:
+        state.say(f"warning: the pressure-penetration front did not settle in "
+                  f"{updates + 1} updates (one more would move it {moved:.3g} edges); "
+                  "try a larger fluid.p_crit", force=True)
+    y, h, p = model.contact_profile(t, eq.u)
+    state.writer.profile(t, {"y": y, "h": h, "p_contact": p}, label=label)

@@ -28,6 +28,7 @@ from .restart import Restart
 from .state import RunState
 from .state_cache import SaveToCache, StateCache
 from .stroke import Stroke
+from .transfer import Transfer
 
 
 def steps_1_2(scene, cache=None, prepared=False):
@@ -87,8 +88,8 @@ def new_state(scene, comm=None, writer=None, say=None, options=None, cache=False
     return RunState(scene, model_from_scene(scene, comm), writer, say, comm)
 
 
-# steps 1-2 on refined meshes at most, each pass refining where the last one's edges fell
-# outside the spans
+# refined meshes at most, each pass refining where the last one's edges fell outside the
+# spans
 REFINE_PASSES = 3
 
 
@@ -97,12 +98,13 @@ def refined_state(scene, comm, writer, say, options=None, cache=False):
     the ``[start] state`` file holds the points its mesh was refined at, the mesh is built
     from them and steps 1-2 read back by the scene's steps. Otherwise steps 1-2 run on the
     scene's own mesh (from the state cache where it has them), the mesh is refined around
-    the pressurised contact's edges (:mod:`sealts.mesh.contact_edges`) and steps 1-2 run
-    on it; where the contact's edges then lie outside the refined spans (the seal settled
-    elsewhere), they are refined too and steps 1-2 run again, at most ``REFINE_PASSES``
-    times. The last pass's state is returned with steps 1-2 done (``prepared``); all
-    passes' work counts in its counters, the summary's ``mesh_refinement`` says where.
-    Under MPI the passes run on rank 0 (:func:`_refined_on_rank_0`)."""
+    the pressurised contact's edges (:mod:`sealts.mesh.contact_edges`) and their end state
+    is carried to it and brought to equilibrium there (:class:`sealts.steps.transfer.
+    Transfer`); where the contact's edges then lie outside the refined spans, they are
+    refined too and the state carried again, at most ``REFINE_PASSES`` times. The last
+    pass's state is returned with steps 1-2 done (``prepared``); all passes' work counts
+    in its counters, the summary's ``mesh_refinement`` says where. Under MPI the passes
+    run on rank 0 (:func:`_refined_on_rank_0`)."""
     from dataclasses import replace
 
     from ..scene import SceneError
@@ -135,35 +137,44 @@ def refined_state(scene, comm, writer, say, options=None, cache=False):
 
 def _refined_on_rank_0(scene, comm, writer, say, options, cache):
     """Under MPI: the passes run on rank 0 alone, serially, and the ranks build the mesh at
-    its points. The seal's roll is weakly held in steps 1-2, and a distributed solve, which
-    differs from the serial one in round-off, can settle it elsewhere and so refine other
-    points: the mesh would depend on the number of ranks. Steps 1-2 then run on the ranks
-    (or come from the state cache)."""
+    its points and take its state of steps 1-2 (as from a state file,
+    :func:`sealts.steps.restart.restore`). The seal's roll is weakly held in steps 1-2, and
+    a distributed solve, which differs from the serial one in round-off, can settle it
+    elsewhere and so refine other points: the mesh would depend on the number of ranks."""
     from petsc4py import PETSc
+
+    from .restart import restore
     mpi = comm.tompi4py()
     out = None
     if comm.getRank() == 0:
         try:
             st, record, points = _refine_passes(scene, PETSc.COMM_SELF, say, options, cache)
-            out = (points, record, st.counters)
+            out = (points, record, st.counters, st.file_data(), st.done, st.writer.calls)
         except (Exception, Interrupted) as e:      # every rank stops, with rank 0's reason
             out = e
     out = mpi.bcast(out, root=0)
     if isinstance(out, BaseException):
         raise out
-    points, record, counters = out
+    points, record, counters, (arrays, attrs), done, profiles = out
     refine = (points, scene.mesh.h_edge) if len(points) else None
     state = RunState(scene, model_from_scene(scene, comm, refine), writer, say, comm,
-                     refine=refine)
+                     refine=refine, prepared=True, done=list(done))
+    entries = arrays.get("front_entries")
+    restore(state, arrays["u"], arrays["X"], arrays.get("front_reach"),
+            {**attrs, **({"front_entries": entries} if entries is not None else {})},
+            "steps 1-2 of rank 0")
     state.counters.add(counters)
+    for t, prof, name, label in profiles:
+        writer.profile(t, prof, name=name, label=label)
     state.parts["mesh_refinement"] = {**record, "passes_on": "rank 0"}
     return state
 
 
 def _refine_passes(scene, comm, say, options, cache):
-    """Steps 1-2 on the scene's mesh, then on meshes refined at the contact's edges until
-    they lie inside the refined spans (:func:`refined_state`): (the last pass's state, the
-    summary's ``mesh_refinement`` record, the refinement points)."""
+    """Steps 1-2 on the scene's mesh, then their state carried to meshes refined at the
+    contact's edges until they lie inside the refined spans (:func:`refined_state`): (the
+    last pass's state, the summary's ``mesh_refinement`` record, the refinement points).
+    The profiles of all passes go to the run (the scene's own mesh's labelled so)."""
     from dataclasses import replace
 
     import numpy as np
@@ -174,8 +185,11 @@ def _refine_passes(scene, comm, say, options, cache):
     base = replace(scene, mesh=replace(m, h_edge=0.0), start=replace(scene.start, state=""))
     say(f"mesh.h_edge = {m.h_edge:g} mm: steps 1-2 on the scene's mesh first, to find the "
         "contact's edges", force=True)
+    profiles = ProfileRecorder()
     st = run_steps(steps_1_2(base, StateCache.for_scene(base, options) if cache else None),
-                   RunState(base, model_from_scene(base, comm), ProfileRecorder(), say, comm))
+                   RunState(base, model_from_scene(base, comm), profiles, say, comm))
+    profiles.calls = [(t, p, name, f"{label} (the scene's own mesh)")
+                      for t, p, name, label in profiles.calls]
     record = {"h_edge": m.h_edge, "edge_span": m.edge_span,
               "base_nodes": int(st.model.mesh.X.shape[0]),
               "base_steps_1_2": st.parts.get("steps_1_2", {}).get("from", "computed"),
@@ -193,19 +207,19 @@ def _refine_passes(scene, comm, say, options, cache):
         say(("contact edges at (r, z) = " if k == 0 else
              "the contact's edges moved out of the refined spans; refined again at (r, z) = ")
             + ", ".join(f"({r:.4f}, {z:.4f})" for r, z in new)
-            + f" mm: {m.h_edge:g} mm over {m.edge_span:g} mm each side", force=True)
+            + f" mm: {m.h_edge:g} mm over {m.edge_span:g} mm each side; the state carried "
+            "there", force=True)
         nxt = RunState(scene, model_from_scene(scene, comm, (points, m.h_edge)),
-                       ProfileRecorder(), say, comm, refine=(points, m.h_edge))
+                       profiles, say, comm, refine=(points, m.h_edge),
+                       done=[d for d in st.done if d != "transfer"])
         nxt.counters.add(st.counters)
         try:
-            st = run_steps(steps_1_2(scene), nxt)
+            st = run_steps([Transfer(st)], nxt)
         except SolveError as e:          # the scene's own mesh went through: say so
             raise SolveError(
                 f"{e} (on the mesh refined to mesh.h_edge = {m.h_edge:g} mm at the contact's "
-                "edges; steps 1-2 ran on the scene's own mesh: without mesh.h_edge, or with "
-                "a larger one, this scene runs; at 20-30 MPa micrometre elements at the "
-                "pressure-side edge are crushed, README \"The film's inlets resolved\")"
-            ) from None
+                "edges, from steps 1-2 on the scene's own mesh: without mesh.h_edge, or "
+                "with a larger one, this scene runs)") from None
     if not len(points):
         say("mesh.h_edge: no contact edge away from the groove's walls after steps 1-2; "
             "the mesh is not refined", force=True)

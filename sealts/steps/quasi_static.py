@@ -67,12 +67,13 @@ def quasi_static(model, extra, u0, window, dt0, hooks=(), observers=()):
     return out
 
 
-def static(model, extra, u, t, counters):
+def static(model, extra, u, t, counters, prefix="static_", linesearch="basic", max_it=10):
     """Newton from u on the unstabilised equilibrium at t (raises SolveError); its
-    iterations count in ``counters``."""
+    iterations count in ``counters``. ``prefix``, ``linesearch``, ``max_it``: its PETSc
+    options prefix, default line search and iterations."""
     problem = model.problem(model.n, model.local_terms(model.walls() + list(extra)),
-                            prefix="static_", dofs=model.dofs)
-    problem.max_it = 10
+                            linesearch=linesearch, prefix=prefix, dofs=model.dofs)
+    problem.max_it = max_it
     try:
         return problem.solve_steady(u, t)
     finally:
@@ -80,19 +81,19 @@ def static(model, extra, u, t, counters):
         counters.linear += problem.counters.linear
 
 
-def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30):
+def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30, **newton):
     """Front update and static solve in turn, from the equilibrium ``eq`` at t, until the
     front moves by less than ``tol`` edges (:func:`sealts.solid.pressure.settle`, which
     bisects a front caught flipping between two positions); the state keeps the front it
     was solved with. A static solve that fails falls back to the stabilised driver on the
     window after t (:class:`PseudoTime`). Returns (equilibrium, edges the front would still
-    move, updates made)."""
+    move, updates made). ``newton``: the static solves' options (:func:`static`)."""
     state = {"eq": eq}
 
     def solve():
         e = state["eq"]
         try:
-            e.u, e.udot = static(model, [load], e.u, t, e.counters), None
+            e.u, e.udot = static(model, [load], e.u, t, e.counters, **newton), None
         except SolveError:
             again = quasi_static(model, [load], e.u, PseudoTime.window(t), dt0)
             state["eq"] = Equilibrium(again.u, again.udot, e.counters + again.counters)

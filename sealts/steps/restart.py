@@ -20,32 +20,9 @@ class Restart(Step):
         self.path, self.cached = path, cached
 
     def run(self, state):
-        from ..scene import SceneError
-        model, scene, path = state.model, state.scene, self.path
+        path = self.path
         un, X, reach, attrs = read_state(path)
-        if X.shape != model.mesh.X.shape or not np.allclose(X, model.mesh.X, atol=1e-12):
-            raise SceneError(f"start.state: {path} was saved for another mesh "
-                             f"({X.shape[0]} nodes; this scene's has "
-                             f"{model.mesh.X.shape[0]})")
-        for key in ("p_in", "p_out"):
-            p = getattr(scene.fluid, key)
-            if float(attrs.get(key, 0.0)) != p:
-                raise SceneError(f"start.state: {path} was pressurised to {key} = "
-                                 f"{float(attrs.get(key, 0.0)):g} MPa, not fluid.{key} = "
-                                 f"{p:g} MPa")
-        pressurised = scene.fluid.p_in != 0.0 or scene.fluid.p_out != 0.0
-        state.u = np.zeros(model.n)
-        state.u[model.udofs] = un
-        state.t = float(attrs.get("t", state.protocol.end(pressurised=pressurised)))
-        if pressurised:
-            state.load = Pressurise.pressure_load(state)
-            state.load.p_crit = float(attrs["p_crit"])
-            entries = attrs.get("front_entries")
-            if entries is None:       # written before the entry moved: the smallest z
-                side = model.mesh.nodes("pressure_side")
-                entries = [side[np.argmin(model.mesh.X[side, 1])]]
-            state.load.set_reach(state.load.recount(reach, entries))
-        state.udot = None
+        restore(state, un, X, reach, attrs, path)
         if self.cached:
             state.say(f"steps 1-2 from the state cache {path} (same mesh, geometry, "
                       "material, contact, pressures, solver options and code)", force=True)
@@ -53,5 +30,37 @@ class Restart(Step):
         else:
             state.say(f"restarted from {path} ({attrs.get('scene', '?')}): steps 1-2 not "
                       "repeated", force=True)
-        state.results = (json.loads(attrs["results"]) if "results" in attrs
-                         else model.results(state.t, state.u))
+
+
+def restore(state, un, X, reach, attrs, path):
+    """Put a saved state of steps 1-2 (:func:`sealts.steps.state.read_state`'s, or
+    :meth:`RunState.file_data`'s: the displacement per node, the mesh, the front's reach,
+    the attributes) into ``state``; ``path`` names it in the errors: another mesh or
+    pressure than the scene's (one-line SceneError)."""
+    from ..scene import SceneError
+    model, scene = state.model, state.scene
+    if X.shape != model.mesh.X.shape or not np.allclose(X, model.mesh.X, atol=1e-12):
+        raise SceneError(f"start.state: {path} was saved for another mesh "
+                         f"({X.shape[0]} nodes; this scene's has "
+                         f"{model.mesh.X.shape[0]})")
+    for key in ("p_in", "p_out"):
+        p = getattr(scene.fluid, key)
+        if float(attrs.get(key, 0.0)) != p:
+            raise SceneError(f"start.state: {path} was pressurised to {key} = "
+                             f"{float(attrs.get(key, 0.0)):g} MPa, not fluid.{key} = "
+                             f"{p:g} MPa")
+    pressurised = scene.fluid.p_in != 0.0 or scene.fluid.p_out != 0.0
+    state.u = np.zeros(model.n)
+    state.u[model.udofs] = un
+    state.t = float(attrs.get("t", state.protocol.end(pressurised=pressurised)))
+    if pressurised:
+        state.load = Pressurise.pressure_load(state)
+        state.load.p_crit = float(attrs["p_crit"])
+        entries = attrs.get("front_entries")
+        if entries is None:       # written before the entry moved: the smallest z
+            side = model.mesh.nodes("pressure_side")
+            entries = [side[np.argmin(model.mesh.X[side, 1])]]
+        state.load.set_reach(state.load.recount(reach, entries))
+    state.udot = None
+    state.results = (json.loads(attrs["results"]) if "results" in attrs
+                     else model.results(state.t, state.u))
