@@ -12,7 +12,9 @@ forms, no seal):
   tol, well within the updates allowed;
 * so is a front that visits three positions in turn (met on the refined mesh of
   ``mesh.h_edge``, carried from the scene's own mesh: 97.73 -> 101.32 -> 98.92 -> 97.73
-  edges), which no test of "the target is where it came from" catches.
+  edges), which no test of "the target is where it came from" catches;
+* a settling that keeps its last equilibrium (``settle_front(keep=True)``) stops there
+  when a solve fails, with the front that equilibrium was solved with.
 """
 import pytest
 
@@ -78,3 +80,32 @@ def test_a_front_cycling_through_three_positions_settles_where_its_target_turns(
     x, moved, k, path = run(f, 0.0)
     assert path[:2] == [2.0, 1.0]                  # followed while its way shrank
     assert abs(x - 0.5) < 1e-4 and moved < 1e-4 and k < 29
+
+
+def test_a_settling_that_keeps_stops_at_its_last_equilibrium(monkeypatch):
+    """settle_front(keep=True) (steps 1-2 carried to a refined mesh): where a static solve
+    fails on a move, the settling stops, and the last equilibrium stands with the front it
+    was solved with; the move it could not make is what the front would still move."""
+    import numpy as np
+
+    import sealts.steps.quasi_static as qs
+    from sealts.core import SolveError
+    load = Load(lambda x: 0.5 * x + 1.0, 0.0)            # targets 1, 1.5, 1.75, ...
+    solved = []
+
+    def static(model, extra, u, t, counters, **newton):
+        if load.reach[0] > 1.6:
+            raise SolveError("3 element(s) of the seal invert")
+        solved.append(load.reach[0])
+        return u + 1.0
+
+    class Model:
+        def node_contact_pressure(self, t, u):
+            return None
+
+    monkeypatch.setattr(qs, "static", static)
+    out, moved, k = qs.settle_front(Model(), load, qs.Equilibrium(np.zeros(2), None), 0.0,
+                                    1.0, keep=True)
+    assert out.stopped and solved == [1.0, 1.5]
+    assert load.reach == [1.5, 5.0] and np.array_equal(out.u, [2.0, 2.0])
+    assert moved == pytest.approx(0.25)

@@ -50,10 +50,11 @@ class Pressurise(Step):
                 f"pressurised to {p_in:g} MPa{back}, pseudo-time {t1:g}")
 
 
-def settled(state, eq, load, t, moved, updates, mounted, label):
+def settled(state, eq, load, t, moved, updates, mounted, label,
+            hint="try a larger fluid.p_crit"):
     """The state, results and profile of steps 1-2's end: the equilibrium ``eq`` at t with
     the settled front of ``load`` (it would still move ``moved`` edges after ``updates``
-    updates); ``mounted`` the mount's results."""
+    updates; ``hint`` ends the warning where it would); ``mounted`` the mount's results."""
     model = state.model
     state.u, state.udot, state.t, state.load = eq.u, eq.udot, t, load
     res = model.results(t, eq.u, eq.udot)
@@ -68,6 +69,6 @@ def settled(state, eq, load, t, moved, updates, mounted, label):
     if moved >= 1e-4:
         state.say(f"warning: the pressure-penetration front did not settle in "
                   f"{updates + 1} updates (one more would move it {moved:.3g} edges); "
-                  "try a larger fluid.p_crit", force=True)
+                  + hint, force=True)
     y, h, p = model.contact_profile(t, eq.u)
     state.writer.profile(t, {"y": y, "h": h, "p_contact": p}, label=label)

@@ -24,6 +24,7 @@ class Equilibrium:
     u: np.ndarray
     udot: np.ndarray | None
     counters: Counters = field(default_factory=Counters)
+    stopped: bool = False        # settle_front(keep=True) stopped on a failed solve
 
 
 class _LastTwo(Observer):
@@ -81,26 +82,43 @@ def static(model, extra, u, t, counters, prefix="static_", linesearch="basic", m
         counters.linear += problem.counters.linear
 
 
-def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30, **newton):
+def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30, keep=False, **newton):
     """Front update and static solve in turn, from the equilibrium ``eq`` at t, until the
     front moves by less than ``tol`` edges (:func:`sealts.solid.pressure.settle`, which
     bisects a front caught flipping between two positions); the state keeps the front it
     was solved with. A static solve that fails falls back to the stabilised driver on the
-    window after t (:class:`PseudoTime`). Returns (equilibrium, edges the front would still
-    move, updates made). ``newton``: the static solves' options (:func:`static`)."""
-    state = {"eq": eq}
+    window after t (:class:`PseudoTime`); with ``keep``, the settling stops there instead
+    and the last equilibrium stands with its front (``stopped``). Returns (equilibrium, edges the front
+    would still move, updates made). ``newton``: the static solves' options
+    (:func:`static`)."""
+    state = {"eq": eq, "good": (list(load.reach), eq.u)}
 
     def solve():
         e = state["eq"]
         try:
             e.u, e.udot = static(model, [load], e.u, t, e.counters, **newton), None
         except SolveError:
+            if keep:
+                raise _Unsettled() from None
             again = quasi_static(model, [load], e.u, PseudoTime.window(t), dt0)
             state["eq"] = Equilibrium(again.u, again.udot, e.counters + again.counters)
+        state["good"] = (list(load.reach), state["eq"].u)
 
-    moved, k = settle(load, t, lambda: model.node_contact_pressure(t, state["eq"].u), solve,
-                      tol, max_updates)
+    try:
+        moved, k = settle(load, t, lambda: model.node_contact_pressure(t, state["eq"].u),
+                          solve, tol, max_updates)
+    except _Unsettled:
+        failed = list(load.reach)
+        reach, state["eq"].u = state["good"]
+        state["eq"].stopped = True
+        load.set_reach(reach)
+        moved = float(sum(abs(a - b) for a, b in zip(failed, reach)))
+        k = max_updates - 1
     return state["eq"], moved, k
+
+
+class _Unsettled(Exception):
+    """A static solve of the settling failed (``settle_front(..., keep=True)``)."""
 
 
 class RodProgress(Observer):
