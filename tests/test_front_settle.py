@@ -109,3 +109,32 @@ def test_a_settling_that_keeps_stops_at_its_last_equilibrium(monkeypatch):
     assert out.stopped and solved == [1.0, 1.5]
     assert load.reach == [1.5, 5.0] and np.array_equal(out.u, [2.0, 2.0])
     assert moved == pytest.approx(0.25)
+
+
+class Coupled:
+    """Two fronts: front 1 moves down by one edge per update to 0 and stays; front 0's
+    target cycles through three positions around a jump at 0.5 + 0.3 x1, which moves with
+    front 1 (its state)."""
+
+    def __init__(self):
+        self.reach = [0.0, 5.0]
+
+    def target_reach(self, contact, t):
+        x0, x1 = self.reach
+        s = 0.3 * x1
+        return [x0 + 2.0 if x0 < 0.5 + s else x0 - 1.0, max(x1 - 1.0, 0.0)]
+
+    def set_reach(self, reach):
+        self.reach = list(reach)
+
+    def check_blow_by(self, t):
+        pass
+
+
+def test_a_cycling_front_is_bisected_only_where_the_other_fronts_stand():
+    """A bracket of front 0 taken while front 1 still moves would hold it round the jump
+    where it was then (0.5 + 0.3 x1), not where it ends (0.5)."""
+    load = Coupled()
+    moved, k = settle(load, 0.0, lambda: None, lambda: None)
+    assert load.reach[1] == 0.0
+    assert abs(load.reach[0] - 0.5) < 1e-4 and moved < 1e-4 and k < 29

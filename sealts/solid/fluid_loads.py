@@ -62,6 +62,14 @@ class FluidLoads(Term):
         for k, f in enumerate(self.loads):
             f.set_reach(reach[2 * k:2 * k + 2])
 
+    def front_points(self):
+        """The fronts' reference positions, the fluids' one after the other."""
+        return np.vstack([f.front_points() for f in self.loads])
+
+    def reach_at(self, points):
+        """The reach whose fronts lie at ``points`` (:meth:`front_points`' order)."""
+        return [r for k, f in enumerate(self.loads) for r in f.reach_at(points[2 * k:2 * k + 2])]
+
     @property
     def wet(self):
         return np.minimum(sum(f.wet for f in self.loads), 1.0)
