@@ -12,7 +12,9 @@ What is asserted:
   contact's edges, and on the refined mesh the pressurised contact ends inside the
   refined spans, between chain nodes about h_edge apart; the summary says so; the state
   of the last pass is the run's (not computed again), and its file holds the points, so
-  a run from the state cache builds the same mesh without steps 1-2.
+  a run from the state cache builds the same mesh without steps 1-2;
+* a failure says on which mesh: the refined one (and that the scene's own went through)
+  or the scene's own (the same without mesh.h_edge).
 """
 import numpy as np
 import pytest
@@ -165,3 +167,24 @@ def test_a_failure_on_the_refined_mesh_says_the_scene_s_own_mesh_ran(tmp_path, m
     assert msg.startswith("at t = 4 s, 3 element(s) of the seal invert (on the mesh refined")
     assert "mesh.h_edge = 0.01 mm" in msg and "scene's own mesh" in msg
     assert "\n" not in msg
+
+
+def test_a_failure_on_the_scene_s_own_mesh_says_so(tmp_path, monkeypatch):
+    """Steps 1-2 that fail before any refinement (the fold at 40 MPa) say that they ran on
+    the scene's own mesh: the same scene fails without mesh.h_edge."""
+    from sealts.core import SolveError
+    from sealts.steps import prepare
+    from sealts.steps.pressurise import Pressurise
+
+    def folds(self, state):
+        raise SolveError("at t = 2.88 the rod side folds over")
+
+    monkeypatch.setattr(Pressurise, "run", folds)
+    s = scene("oring_stroke", mesh={"h_contact": H_CONTACT, "h_bulk": H_BULK, "h_edge": 0.01,
+                                    "cache": str(tmp_path)},
+              output={"progress": False})
+    with pytest.raises(SolveError) as e:
+        prepare(s)
+    msg = str(e.value)
+    assert msg.startswith("at t = 2.88 the rod side folds over (on the scene's own mesh")
+    assert "refined" not in msg and "\n" not in msg
