@@ -66,7 +66,8 @@ def locate(X_old, conn_old, P, batch=4096):
         outside[~np.isfinite(outside)] = np.inf
         order = np.lexsort((outside, pi))                 # by point, best first
         first = order[np.flatnonzero(np.r_[True, np.diff(pi[order]) != 0])]
-        elem[s:s + len(Q)], xi[s:s + len(Q)], eta[s:s + len(Q)] = ei[first], x[first], e[first]
+        part = slice(s, s + len(Q))
+        elem[part], xi[part], eta[part] = ei[first], x[first], e[first]
     return elem, xi, eta
 
 

@@ -1,5 +1,6 @@
 """The elements' dilatation theta_e (:mod:`sealts.solid.q1p0`) and a displacement field
-corrected to given dilatations: a state carried to another mesh (:mod:`sealts.steps.transfer`).
+corrected to given dilatations: a state carried to another mesh
+(:mod:`sealts.steps.transfer`).
 
 For a Q1/P0 element
 
@@ -9,8 +10,8 @@ For a Q1/P0 element
 f_g = (F11, F12, F21, F22, F33) = I + B_g u_e, J = (F11 F22 - F12 F21) F33.
 
 Why a correction: the rubber is nearly incompressible (K / G ~ 1000). A displacement field
-interpolated from a coarser mesh is bilinear inside each old element, whose J varies there by
-about 1 % while only its mean theta is held to the pressure (Q1/P0); the new, smaller
+interpolated from a coarser mesh is bilinear inside each old element, whose J varies there
+by about 1 % while only its mean theta is held to the pressure (Q1/P0); the new, smaller
 elements sample that variation, and at K = 2 / D1 every per cent is some 20 MPa of
 pressure. Newton's method from such a state meets a Jacobian that is far from positive
 (the geometric stiffness of those pressures) and turns elements over. So the field is first

@@ -68,7 +68,8 @@ class FluidLoads(Term):
 
     def reach_at(self, points):
         """The reach whose fronts lie at ``points`` (:meth:`front_points`' order)."""
-        return [r for k, f in enumerate(self.loads) for r in f.reach_at(points[2 * k:2 * k + 2])]
+        return [r for k, f in enumerate(self.loads)
+                for r in f.reach_at(points[2 * k:2 * k + 2])]
 
     @property
     def wet(self):

@@ -409,7 +409,8 @@ def settle(load, t, contact_pressure, solve, tol=1e-4, max_updates=30):
             return moved, k
         moves = [abs(a - c) for a, c in zip(new, kept)]
         for j in range(n):
-            if stands[j] is not None and max(moves[:j] + moves[j + 1:], default=0.0) > stands[j]:
+            others = max(moves[:j] + moves[j + 1:], default=0.0)
+            if stands[j] is not None and others > stands[j]:
                 bracket[j] = stands[j] = None           # stale: followed again
         load.set_reach(new)
         solve()

@@ -186,12 +186,13 @@ def _refine_passes(scene, comm, say, options, cache):
     say(f"mesh.h_edge = {m.h_edge:g} mm: steps 1-2 on the scene's mesh first, to find the "
         "contact's edges", force=True)
     profiles = ProfileRecorder()
+    entry = StateCache.for_scene(base, options) if cache else None
     try:
-        st = run_steps(steps_1_2(base, StateCache.for_scene(base, options) if cache else None),
+        st = run_steps(steps_1_2(base, entry),
                        RunState(base, model_from_scene(base, comm), profiles, say, comm))
     except SolveError as e:          # where: before any refinement
-        raise SolveError(f"{e} (on the scene's own mesh, which mesh.h_edge refines only after "
-                         "steps 1-2: the same without it)") from None
+        raise SolveError(f"{e} (on the scene's own mesh, which mesh.h_edge refines only "
+                         "after steps 1-2: the same without it)") from None
     profiles.calls = [(t, p, name, f"{label} (the scene's own mesh)")
                       for t, p, name, label in profiles.calls]
     record = {"h_edge": m.h_edge, "edge_span": m.edge_span,

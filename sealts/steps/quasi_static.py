@@ -85,13 +85,13 @@ def static(model, extra, u, t, counters, prefix="static_", linesearch="basic", m
 def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30, keep=False, **newton):
     """Front update and static solve in turn, from the equilibrium ``eq`` at t, until the
     front moves by less than ``tol`` edges (:func:`sealts.solid.pressure.settle`, which
-    bisects a front caught flipping between two positions); the state keeps the front it
-    was solved with. A static solve that fails falls back to the stabilised driver on the
-    window after t (:class:`PseudoTime`); with ``keep``, the settling stops there instead
-    and the last equilibrium stands with its front (``stopped``). Returns (equilibrium, edges the front
-    would still move, updates made). ``newton``: the static solves' options
+    bisects a front caught in a cycle); the state keeps the front it was solved with. A
+    static solve that fails falls back to the stabilised driver on the window after t
+    (:class:`PseudoTime`); with ``keep``, the settling stops there instead and the last
+    equilibrium stands with its front (``stopped``). Returns (equilibrium, edges the front
+    would still move, index of the last update). ``newton``: the static solves' options
     (:func:`static`)."""
-    state = {"eq": eq, "good": (list(load.reach), eq.u)}
+    state = {"eq": eq, "good": (list(load.reach), eq.u), "solves": 0}
 
     def solve():
         e = state["eq"]
@@ -103,6 +103,7 @@ def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30, keep=False, 
             again = quasi_static(model, [load], e.u, PseudoTime.window(t), dt0)
             state["eq"] = Equilibrium(again.u, again.udot, e.counters + again.counters)
         state["good"] = (list(load.reach), state["eq"].u)
+        state["solves"] += 1
 
     try:
         moved, k = settle(load, t, lambda: model.node_contact_pressure(t, state["eq"].u),
@@ -113,7 +114,7 @@ def settle_front(model, load, eq, t, dt0, tol=1e-4, max_updates=30, keep=False, 
         state["eq"].stopped = True
         load.set_reach(reach)
         moved = float(sum(abs(a - b) for a, b in zip(failed, reach)))
-        k = max_updates - 1
+        k = state["solves"]               # the update whose solve failed
     return state["eq"], moved, k
 
 

@@ -1,5 +1,6 @@
 """Steps 1-2 carried to another mesh of the same seal (``mesh.h_edge``: from the scene's own
-mesh to the one refined at the contact's edges, :func:`sealts.steps.procedure.refined_state`).
+mesh to the one refined at the contact's edges,
+:func:`sealts.steps.procedure.refined_state`).
 
 Steps 1-2 are quasi-static, hyperelastic (long-term) and frictionless: their end is a static
 equilibrium that carries no history but the pressure-penetration front. So the refined
@@ -73,14 +74,15 @@ class Transfer(Step):
             state.u, state.udot, state.t = eq.u, eq.udot, t
             state.results = model.results(t, eq.u, eq.udot)
             y, h, p = model.contact_profile(t, eq.u)
-            state.writer.profile(t, {"y": y, "h": h, "p_contact": p}, label="mounted, " + label)
+            state.writer.profile(t, {"y": y, "h": h, "p_contact": p},
+                                 label="mounted, " + label)
             return
         eq, moved, updates = settle_front(model, load, eq, t, dt, keep=True, **NEWTON)
         state.counters.add(eq.counters)
         hint = ("try a larger fluid.p_crit" if not eq.stopped else
                 "Newton's method failed on that move, and the front stands where it last "
-                "converged (on the refined mesh's edges, next to a contact's edge loaded by "
-                "p_in; in a stroke the film carries the fluid on the rod side)")
+                "converged (on the refined mesh's edges, next to a contact's edge loaded "
+                "by p_in; in a stroke the film carries the fluid on the rod side)")
         settled(state, eq, load, t, moved, updates, src.results.get("mounted", {}),
                 f"pressurised to {state.scene.fluid.p_in:g} MPa, " + label, hint)
 
