@@ -141,11 +141,21 @@ def test_a_pressurised_seal_carried_to_the_refined_mesh_settles_there(pressurise
     is the scene's own mesh's to the difference of the two meshes (0.5 % on this coarse
     one). (Steps 1-2 repeated on the refined mesh are no truth here: their front can end in
     another roll state, or unsettled between two fronts that flip together.)"""
+    from sealts.io.writer import ProfileRecorder
     from sealts.steps import prepare
     s = replace(pressurised.scene, mesh=replace(pressurised.scene.mesh, h_edge=0.01,
                                                 cache=str(tmp_path)))
-    carried = prepare(s)
+    written = ProfileRecorder()
+    carried = prepare(s, writer=written)
     assert carried.done == ["mount", "pressurise", "transfer"]
+    # the scene's own mesh's profiles (mounted, pressurised) in a file of their own, the
+    # last refined mesh's pressurised one in profiles.csv (this coarse mesh is refined
+    # twice): one block per t in each
+    assert len(carried.parts["mesh_refinement"]["passes"]) == 3
+    assert [(t, name) for t, _, name, _ in written.calls] == [
+        (2.0, "profiles_scene_mesh.csv"), (4.0, "profiles_scene_mesh.csv"),
+        (4.0, "profiles.csv")]
+    assert len(written.calls[-1][1]["y"]) == len(carried.model.side.chain)
     assert carried.model.mesh.X.shape[0] > pressurised.model.mesh.X.shape[0]
     assert carried.results["front_change_edges"] < 1e-4
     assert carried.results["contact_force_total"] == pytest.approx(

@@ -174,7 +174,8 @@ def _refine_passes(scene, comm, say, options, cache):
     """Steps 1-2 on the scene's mesh, then their state carried to meshes refined at the
     contact's edges until they lie inside the refined spans (:func:`refined_state`): (the
     last pass's state, the summary's ``mesh_refinement`` record, the refinement points).
-    The profiles of all passes go to the run (the scene's own mesh's labelled so)."""
+    The profiles of all passes go to the run (the scene's own mesh's to
+    ``profiles_scene_mesh.csv``)."""
     from dataclasses import replace
 
     import numpy as np
@@ -193,8 +194,12 @@ def _refine_passes(scene, comm, say, options, cache):
     except SolveError as e:          # where: before any refinement
         raise SolveError(f"{e} (on the scene's own mesh, which mesh.h_edge refines only "
                          "after steps 1-2: the same without it)") from None
-    profiles.calls = [(t, p, name, f"{label} (the scene's own mesh)")
+    # the scene's own mesh's profiles in a file of their own: at the same pseudo-time as
+    # the refined mesh's, they would be two blocks of one t in profiles.csv
+    profiles.calls = [(t, p, name.replace(".csv", "_scene_mesh.csv"),
+                       f"{label} (the scene's own mesh)")
                       for t, p, name, label in profiles.calls]
+    n_base = len(profiles.calls)
     record = {"h_edge": m.h_edge, "edge_span": m.edge_span,
               "base_nodes": int(st.model.mesh.X.shape[0]),
               "base_steps_1_2": st.parts.get("steps_1_2", {}).get("from", "computed"),
@@ -218,6 +223,7 @@ def _refine_passes(scene, comm, say, options, cache):
                        profiles, say, comm, refine=(points, m.h_edge),
                        done=[d for d in st.done if d != "transfer"])
         nxt.counters.add(st.counters)
+        del profiles.calls[n_base:]      # the last refined mesh's profile only
         try:
             st = run_steps([Transfer(st)], nxt)
         except SolveError as e:          # the scene's own mesh went through: say so
