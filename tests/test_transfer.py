@@ -5,7 +5,8 @@ What is asserted:
 
 * the interpolation reproduces any linear field exactly (closed form) on a distorted
   quadrilateral mesh, at interior points and at points just outside its boundary (the
-  polygon of a curved boundary differs from mesh to mesh);
+  polygon of a curved boundary differs from mesh to mesh); boundary nodes go onto the old
+  deformed boundary (affine maps exactly; a point on an arc onto the old chord);
 * the dilatation correction gives every element its target dilatation (quadratic
   Gauss-Newton), keeps the fixed dofs, and leaves a field that meets its targets alone;
 * a front's reference position is where its wetted part ends, and carried to the same
@@ -49,6 +50,24 @@ def test_interpolation_reproduces_a_linear_field_inside_and_just_outside():
     elem, xi, eta = locate(X, conn, outside)
     assert np.all(np.maximum(np.abs(xi), np.abs(eta)) > 1.0)       # extrapolated
     assert np.all(np.maximum(np.abs(xi), np.abs(eta)) < 1.1)       # from the nearest
+
+
+def test_boundary_points_go_onto_the_old_deformed_boundary():
+    """Under an affine map (straight edges stay straight) a point of the old boundary goes
+    where the map takes it; a point on an arc between two old nodes goes onto their chord
+    deformed, not the sagitta beyond it (as the element's extrapolation would)."""
+    from sealts.mesh.transfer import onto_boundary
+    X = np.array([[0.0, 0.0], [0.5, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    edges = np.array([[0, 1], [1, 2], [2, 3], [3, 4], [4, 0]])
+    F, c = np.array([[1.1, 0.2], [-0.1, 0.9]]), np.array([0.3, -0.2])
+    P = np.array([[0.25, 0.0], [0.8, 0.0], [1.0, 0.4], [0.3, 1.0], [0.0, 0.65]])
+    assert np.abs(onto_boundary(X, edges, X @ F.T + c, P) - (P @ F.T + c)).max() < 1e-14
+    a = np.radians(np.arange(0.0, 360.0, 30.0))                # a 12-gon on the unit circle
+    X = np.column_stack([np.cos(a), np.sin(a)])
+    edges = np.column_stack([np.arange(12), (np.arange(12) + 1) % 12])
+    b = np.radians(15.0)                                       # mid-arc, the sagitta off
+    got = onto_boundary(X, edges, X, [[np.cos(b), np.sin(b)]])
+    assert np.abs(got - 0.5 * (X[0] + X[1])).max() < 1e-14
 
 
 @pytest.fixture(scope="module")

@@ -13,6 +13,13 @@ iterations for the mildly distorted elements of a mesh). A node outside every ol
 (a curved boundary is a polygon through other nodes on each mesh: up to h^2 / (8 R) off it)
 takes the linear extrapolation of the element nearest to it in (xi, eta), which reproduces
 any bilinear field exactly, as interpolation does.
+
+The boundary is placed otherwise (:func:`onto_boundary`): each new boundary node goes to the
+point of the old mesh's deformed boundary polygon that corresponds to its nearest point on
+the old reference polygon. Extrapolated, a node on an arc between two old nodes lands the
+arc's sagitta, h^2 / (8 R), beyond the old deformed chord: 0.12 um for 0.05 mm elements on
+the paper's O-ring, into a rod whose asperity law (h_mix 0.07 um for a smooth rod) reads
+it as a great pressure.
 """
 import numpy as np
 
@@ -78,3 +85,20 @@ def interpolate(X_old, conn_old, values, X_new):
     N, _, _ = _shape(xi, eta)
     v = np.asarray(values, float)[np.asarray(conn_old)[elem]]   # (n_new, 4, ...)
     return np.einsum("ka,ka...->k...", N, v)
+
+
+def onto_boundary(X_old, edges_old, x_old, P):
+    """Deformed positions (k, 2) for the reference points P (k, 2) on the boundary: each
+    one's nearest point on the old reference boundary polygon (``edges_old``, (m, 2) node
+    pairs; ``X_old`` reference, ``x_old`` deformed coordinates of the old nodes), at the
+    same fraction of the same old edge deformed."""
+    A, B = np.asarray(X_old, float)[edges_old[:, 0]], np.asarray(X_old, float)[edges_old[:, 1]]
+    P = np.asarray(P, float)
+    d = B - A
+    tau = np.clip(np.einsum("kmd,md->km", P[:, None, :] - A[None], d)
+                  / np.einsum("md,md->m", d, d)[None], 0.0, 1.0)             # (k, m)
+    dist = np.hypot(*(A[None] + tau[..., None] * d[None] - P[:, None, :]).transpose(2, 0, 1))
+    k = np.argmin(dist, axis=1)
+    t = tau[np.arange(len(P)), k][:, None]
+    xa, xb = np.asarray(x_old)[edges_old[k, 0]], np.asarray(x_old)[edges_old[k, 1]]
+    return xa + t * (xb - xa)

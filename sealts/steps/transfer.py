@@ -28,7 +28,7 @@ where that mesh settled it; in a stroke the film carries the fluid on the rod si
 import numpy as np
 
 from ..core import SolveError
-from ..mesh.transfer import interpolate, locate
+from ..mesh.transfer import interpolate, locate, onto_boundary
 from ..solid.pressure import boundary_loop
 from ..solid.dilatation import dilatation, match_dilatation
 from .base import Step
@@ -90,15 +90,20 @@ class Transfer(Step):
 def carried(old, u_old, new):
     """The displacements ``u_old`` of the model ``old`` carried to the model ``new`` (another
     mesh of the same seal; serial): interpolated in the reference configuration
-    (:func:`sealts.mesh.transfer.interpolate`), then corrected until each new element has
-    the dilatation of the old element its centroid lies in, the boundary's nodes kept
-    (:func:`sealts.solid.dilatation.match_dilatation`)."""
+    (:func:`sealts.mesh.transfer.interpolate`), the boundary's nodes placed on the old
+    deformed boundary (:func:`sealts.mesh.transfer.onto_boundary`), then corrected until
+    each new element has the dilatation of the old element its centroid lies in, the
+    boundary's nodes kept (:func:`sealts.solid.dilatation.match_dilatation`)."""
     X, conn = old.mesh.X, old.mesh.conn
+    un_old = np.asarray(u_old)[old.udofs]
+    un = interpolate(X, conn, un_old, new.mesh.X)
+    boundary = np.unique(boundary_loop(new.mesh.conn).ravel())
+    Xb = new.mesh.X[boundary]
+    un[boundary] = onto_boundary(X, boundary_loop(conn), X + un_old, Xb) - Xb
     u = np.zeros(new.n)
-    u[new.udofs] = interpolate(X, conn, np.asarray(u_old)[old.udofs], new.mesh.X)
+    u[new.udofs] = un
     theta_old, _ = dilatation(old.solid, u_old)
     inside, _, _ = locate(X, conn, new.mesh.X[new.mesh.conn].mean(axis=1))
-    boundary = np.unique(boundary_loop(new.mesh.conn).ravel())
     u, _ = match_dilatation(new.solid, u, theta_old[inside], new.udofs[boundary].ravel(),
                             new.n)
     return u
