@@ -93,7 +93,8 @@ def _init_petsc(argv, scene):
 
 
 # the option prefixes of sealts' solvers (sealts.problem.Problem's ``prefix``)
-SOLVER_PREFIXES = ("", "static_", "hold_", "stroke_", "stroke_film_", "stroke_start_")
+SOLVER_PREFIXES = ("", "static_", "transfer_", "hold_", "stroke_", "stroke_film_",
+                   "stroke_start_")
 
 
 # sealts' own solver options (read by sealts, not by a PETSc object): name -> meaning

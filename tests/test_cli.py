@@ -103,7 +103,8 @@ def test_diverging_solve_is_one_line_exit_3(tmp_path):
 @pytest.mark.parametrize("option, value, named", [
     ("-ts_adapt_type", "foo", 'Unknown TSAdapt type "foo"'),
     ("-snes_linesearch_type", "nope", "Line Search type nope"),
-    ("-ts_rtol", "abc", "abc has no numeric value")])
+    ("-ts_rtol", "abc", "abc has no numeric value"),
+    ("-transfer_snes_linesearch_type", "nope", "Line Search type nope")])
 def test_bad_petsc_option_value_is_one_line_exit_2(tmp_path, option, value, named):
     """An invalid value of a PETSc option (command line or the scene's [petsc] table) is one
     line naming it, not PETSc's call stack and a Python traceback."""
@@ -112,6 +113,17 @@ def test_bad_petsc_option_value_is_one_line_exit_2(tmp_path, option, value, name
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("PETSc error: "), r.stderr
     assert named in lines[0]
+
+
+def test_every_solver_prefix_is_accepted(tmp_path):
+    """An option of each sealts solver's prefix (README, "Running") is read, not refused
+    as unknown: ``transfer_`` is the Newton solve of steps 1-2 carried to the mesh
+    of mesh.h_edge (sealts.steps.transfer)."""
+    from sealts.cli import SOLVER_PREFIXES
+    assert "transfer_" in SOLVER_PREFIXES
+    args = [a for p in SOLVER_PREFIXES if p for a in (f"-{p}snes_max_it", "60")]
+    r = sealts("run", str(CONFIGS / "slider.toml"), "-o", str(tmp_path), *args)
+    assert r.returncode == 0, r.stderr
 
 
 def test_bad_petsc_option_leaves_the_last_results_in_place(tmp_path):
