@@ -41,6 +41,7 @@ def test_key_changes_with_every_input_of_steps_1_2_and_only_with_them(tmp_path,
              sec("mount", dt=0.01)]
     keys = [key(s, {"stroke_ts_rtol": "1e-3"}) for s in other]
     keys += [key(base, {"ts_rtol": "1e-2"}), key(base, {"static_snes_rtol": "1e-12"}),
+             key(base, {"transfer_snes_max_it": "60"}),
              key(base, {"pc_factor_mat_solver_type": "petsc"})]
     monkeypatch.setattr(state_cache, "code_version", lambda: "a changed line of sealts")
     keys.append(key(base, {"stroke_ts_rtol": "1e-3"}))

@@ -3,7 +3,8 @@
 A seal scene's steps 1-2 (mount, pressurise) depend on the seal, the rod's radius, the
 groove (not its friction), the long-term material, the mesh, the mount, the asperity law
 (not its friction), the fluid's p_in, p_out and p_crit, the PETSc options of their solvers
-(no prefix and ``static_``; monitors and viewers aside) and sealts' own code. A run whose
+(no prefix, ``static_`` and, for ``mesh.h_edge``, ``transfer_``; monitors and viewers
+aside) and sealts' own code. A run whose
 scene goes on to a hold, a stroke or ``sealts ihl`` keeps their end state, the ``state.h5``
 of :mod:`sealts.steps.state`, as
 
@@ -48,7 +49,8 @@ def solver_options(options):
     out = {}
     for name, value in (options or {}).items():
         name = name.lstrip("-")
-        bare = name[len("static_"):] if name.startswith("static_") else name
+        bare = next((name[len(p):] for p in ("static_", "transfer_") if name.startswith(p)),
+                    name)
         if bare.startswith(FAMILIES) and not any(w in name for w in REPORTS):
             out[name] = str(value)
     return out
