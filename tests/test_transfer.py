@@ -7,8 +7,9 @@ What is asserted:
   quadrilateral mesh, at interior points and at points just outside its boundary (the
   polygon of a curved boundary differs from mesh to mesh); boundary nodes go onto the old
   deformed boundary (affine maps exactly; a point on an arc onto the old chord);
-* the dilatation correction gives every element its target dilatation (quadratic
-  Gauss-Newton), keeps the fixed dofs, and leaves a field that meets its targets alone;
+* the dilatation is the element kernel's, its gradient the central difference quotient;
+  the correction gives every element its target dilatation (quadratic Gauss-Newton), keeps
+  the fixed dofs, and leaves a field that meets its targets alone;
 * a front's reference position is where its wetted part ends, and carried to the same
   loop it gives back its reach;
 * carried to the very mesh it came from, a pressurised state is itself (one fluid, or a
@@ -78,6 +79,26 @@ def pressurised(tmp_path_factory):
     s = scene("oring_stroke", mesh={"h_contact": H_CONTACT, "h_bulk": H_BULK, "cache": cache},
               output={"progress": False})
     return prepare(s)
+
+
+def test_the_dilatation_is_the_element_kernel_s_and_its_gradient_the_difference_quotient(
+        pressurised):
+    """theta_e as the element kernel computes it for its pressure (sealts.solid.q1p0), and
+    d theta / d u against central differences."""
+    from sealts.solid.dilatation import dilatation
+    m = pressurised.model
+    u = np.array(pressurised.u)
+    theta, grad = dilatation(m.solid, u)
+    assert np.abs(theta - m.solid.state(u)[3]).max() < 1e-14
+    rng = np.random.default_rng(2)
+    eps = 1e-7
+    for e in rng.choice(theta.size, 5, replace=False):
+        for j in range(8):
+            du = np.zeros_like(u)
+            du[m.solid.dofs[e, j]] = eps
+            fd = (dilatation(m.solid, u + du)[0][e] - dilatation(m.solid, u - du)[0][e]) / (
+                2 * eps)
+            assert fd == pytest.approx(grad[e, j], rel=1e-6, abs=1e-6)
 
 
 def test_the_dilatation_correction_meets_its_targets_and_keeps_the_fixed_dofs(pressurised):

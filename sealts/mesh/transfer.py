@@ -1,6 +1,6 @@
 """A nodal field carried from one quadrilateral mesh to another of the same body
 (``mesh.h_edge``: the pressurised state of the scene's own mesh onto the mesh refined at the
-contact's edges, :func:`sealts.steps.transfer.transfer_state`).
+contact's edges, :func:`sealts.steps.transfer.carried`).
 
 Each new node X is located in the old mesh's reference configuration: in the old element
 whose bilinear map x(xi, eta) = sum_a N_a(xi, eta) X_a reaches it with (xi, eta) in

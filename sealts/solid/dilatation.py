@@ -52,32 +52,36 @@ def match_dilatation(solid, u, target, fixed, n, iterations=4, tol=1e-9):
     ne = solid.dofs.shape[0]
     keep = np.ones(n)
     keep[np.asarray(fixed, np.int64)] = 0.0
-    rows = np.repeat(np.arange(ne), 8)
-    cols = solid.dofs.ravel()
-    misfit = np.inf
-    for _ in range(iterations):
-        theta, grad = dilatation(solid, u)
-        r = theta - target
-        misfit = float(np.abs(r).max())
-        if misfit < tol:
-            break
-        vals = (grad * keep[solid.dofs]).ravel()
-        G = PETSc.Mat().createAIJ((ne, n), comm=PETSc.COMM_SELF)
-        G.setPreallocationCOO(rows.astype(PETSc.IntType), cols.astype(PETSc.IntType))
-        G.setValuesCOO(vals, addv=PETSc.InsertMode.ADD_VALUES)
-        A = G.matTransposeMult(G)
-        # rows of elements with every node fixed are empty: a shift far below the entries
-        A.shift(1e-12 * float(np.abs(A.getDiagonal().getArray()).max()))
-        ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
-        ksp.setOperators(A)
-        ksp.setType("preonly")
-        ksp.getPC().setType("lu")
-        lam, rhs = A.createVecs()
-        rhs.setArray(r)
-        ksp.solve(rhs, lam)
-        du = PETSc.Vec().createSeq(n, comm=PETSc.COMM_SELF)
-        G.multTranspose(lam, du)
-        u -= du.getArray()
+    G = PETSc.Mat().createAIJ((ne, n), comm=PETSc.COMM_SELF)   # the pattern once
+    G.setPreallocationCOO(np.repeat(np.arange(ne), 8).astype(PETSc.IntType),
+                          solid.dofs.ravel().astype(PETSc.IntType))
+    ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
+    ksp.setType("preonly")
+    ksp.getPC().setType("lu")
+    A = lam = rhs = None
+    du = PETSc.Vec().createSeq(n, comm=PETSc.COMM_SELF)
+    try:
+        for it in range(iterations + 1):
+            theta, grad = dilatation(solid, u)
+            r = theta - target
+            misfit = float(np.abs(r).max())
+            if misfit < tol or it == iterations:
+                break
+            G.setValuesCOO((grad * keep[solid.dofs]).ravel(),
+                           addv=PETSc.InsertMode.INSERT_VALUES)
+            A = G.matTransposeMult(G, result=A)
+            # rows of elements with every node fixed are empty: a shift far below the
+            # entries
+            A.shift(1e-12 * float(np.abs(A.getDiagonal().getArray()).max()))
+            ksp.setOperators(A)
+            if lam is None:
+                lam, rhs = A.createVecs()
+            rhs.setArray(r)
+            ksp.solve(rhs, lam)
+            G.multTranspose(lam, du)
+            u -= du.getArray()
+    finally:
         for obj in (G, A, ksp, lam, rhs, du):
-            obj.destroy()
+            if obj is not None:
+                obj.destroy()
     return u, misfit
