@@ -360,13 +360,17 @@ def plot(rows, fit, path, when):
                           "elsewhere (not joined)",
              "edge": "the default with mesh.h_edge 0.0015 mm, five placements (not joined)",
              "default": "default (0.025 / 0.2 mm, BDF 3, rtol 1e-2)"}
-    for fam, rs in fams.items():
+    # one colour per family (the default cycle of ten repeats beyond ten families)
+    colours = plt.get_cmap("tab20").colors[::2] + plt.get_cmap("tab20").colors[1::2]
+    for i, (fam, rs) in enumerate(fams.items()):
         # a mesh family joined in the order of its unknowns, the others of their times
         rs = sorted(rs, key=lambda r: r["unknowns"] if fam in ("mesh", "layer") and
                     r.get("unknowns") else r["wall"])
-        style = {"default": "*", "placement": "kx", "edge": "r+"}.get(fam, "o-")
+        style = {"default": "*", "placement": "x", "edge": "+"}.get(fam, "o-")
+        colour = {"placement": "k", "edge": "darkviolet"}.get(fam, colours[i % len(colours)])
         ax[0].loglog([r["wall"] for r in rs], [max(r["e_net"], 1e-6) for r in rs],
-                     style, ms=12 if fam == "default" else 6, label=names.get(fam, fam))
+                     style, color=colour, ms={"default": 12, "edge": 9}.get(fam, 6),
+                     mew=1.5 if fam == "edge" else 1.0, label=names.get(fam, fam))
         for r in rs:
             if fam == "mesh":
                 ax[0].annotate(r["label"], (r["wall"], max(r["e_net"], 1e-6)), fontsize=7,
