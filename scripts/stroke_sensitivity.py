@@ -14,6 +14,8 @@ and the spread of each family against its base. Usage:
         [--set stroke.friction_history=state ...]
 
 ``sweep``: rtol 1e-2, 1e-3, 1e-4, 1e-5 (its spread is then the distance from the first).
+The mesh is ``--mesh``'s sizes without the shipped scene's refinement at the contact's edges
+(tests/conftest.coarsened); ``--set mesh.h_edge=0.0015`` refines them as the scene does.
 """
 import argparse
 import sys

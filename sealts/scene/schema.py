@@ -169,8 +169,8 @@ class Mesh:
     h_edge: float = option(0.0, unit="mm", ge=0.0,
                            doc="element size at the pressurised contact's two edges, the "
                                "film's inlets: steps 1-2 run on the mesh above first to find "
-                               "them, then on the refined mesh (0: off; README, 'Where gmsh "
-                               "puts the nodes')")
+                               "them and their end state is carried to the refined mesh (0: "
+                               "off; README, 'Where gmsh puts the nodes')")
     edge_span: float = option(0.08, unit="mm", gt=0.0,
                               doc="how far along the rod side to either side of each edge "
                                   "the size is h_edge")
