@@ -4,23 +4,24 @@ against its closed form (issue 17).
 Every O-ring setting is one ``sealts run`` process, timed whole as a user meets it (numba's
 cache warm, the mesh cached, nothing of steps 1-2 reused), one after another, nothing else
 of sealts running beside. The defaults are ``configs/oring_stroke.toml`` (0.025 / 0.2 mm
-mesh, BDF 3, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 8,000 unknowns and
-UMFPACK above, sealts/problem/problem.py); each family changes one factor:
+mesh refined to ``mesh.h_edge`` = 0.0015 mm at the pressurised contact's edges, the film's
+inlets; BDF 3, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 8,000 unknowns
+and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
 
 * ``rtol``: the stroke's TS tolerance (``-stroke_ts_rtol``) 1e-2, 1e-3, 1e-4;
-* ``mesh``: contact / bulk element size 0.1 / 0.4, 0.05 / 0.2, 0.025 / 0.2, 0.02 / 0.2,
-  0.0175 / 0.2, 0.0125 / 0.2, 0.0125 / 0.1 mm (also the cost growth: wall time against
-  unknowns, fitted exponent);
-* ``layer``: contact sizes 0.025, 0.02, 0.0175, 0.0125 mm kept to 0.1 mm beneath the rod
-  side (``mesh.layer_depth``), bulk 0.2 mm;
-* ``placement``: the default's element sizes meshed with grading distances 0.4, 0.45, 0.55,
-  0.6 mm (``mesh.grading_distance``, 0.5 by default) and mirror-symmetric
-  (``mesh.symmetric``), and 0.0125 / 0.1 mm with 0.45 and 0.55: the same resolution with
-  the nodes elsewhere. The report gives the spread of the errors over each size's meshes,
-  which is that size's accuracy; one row alone is one draw from it;
-* ``edge``: the default with ``mesh.h_edge`` = 0.0015 mm (the mesh refined at the
-  pressurised contact's edges, the film's inlets), at the default grading distance and the
-  four of ``placement``;
+* ``edge``: the default meshed with grading distances 0.4, 0.45, 0.55, 0.6 mm
+  (``mesh.grading_distance``, 0.5 by default): the same resolution with the nodes
+  elsewhere. The report gives the spread of the errors over these meshes and the
+  default's, which is the default's accuracy; one row alone is one draw from it;
+* ``mesh``: without ``mesh.h_edge`` (``h_edge = 0``), contact / bulk element size 0.1 /
+  0.4, 0.05 / 0.2, 0.025 / 0.2 (the default before 2026-12-05), 0.02 / 0.2, 0.0175 / 0.2,
+  0.0125 / 0.2, 0.0125 / 0.1 mm (also the cost growth: wall time against unknowns, fitted
+  exponent);
+* ``layer``: without ``mesh.h_edge``, contact sizes 0.025, 0.02, 0.0175, 0.0125 mm kept to
+  0.1 mm beneath the rod side (``mesh.layer_depth``), bulk 0.2 mm;
+* ``placement``: without ``mesh.h_edge``, 0.025 / 0.2 mm meshed with the grading distances
+  of ``edge`` and mirror-symmetric (``mesh.symmetric``), and 0.0125 / 0.1 mm with 0.45 and
+  0.55;
 * ``bdf``: the BDF order 1, 2 (PETSc's default), 3 (``-stroke_ts_bdf_order``);
 * ``theta``: Crank-Nicolson (``-stroke_ts_type theta -stroke_ts_theta_theta 0.5
   -stroke_ts_theta_endpoint``);
@@ -31,7 +32,8 @@ UMFPACK above, sealts/problem/problem.py); each family changes one factor:
   every other row runs steps 1-2, ``[start] cache = false``);
 * ``before``: BDF 2 with stroke rtol 1e-3 (the defaults until 2026-12-03);
 * ``targets``: ``configs/paper_fig14_ve_sq_ff.toml`` (viscoelastic, squeeze, flow factors;
-  timed, its leakage not compared) and the paper's mesh (0.01 / 0.05 mm) at the defaults;
+  timed, its leakage not compared) and the paper's mesh (0.01 / 0.05 mm, without
+  ``mesh.h_edge``) at the defaults;
 * ``plain``: the default again without -log_view (every other row pays the log's own
   time; the 10 s target is judged on this row).
 
@@ -39,8 +41,8 @@ ARKIMEX and ROSW are not in the list: the DAE has no explicit part to split off 
 U') = 0 with a singular mass matrix: the film pressures and the quasi-static seal carry no
 U'), so they would run as fully implicit methods with stage counts of 3-4 per step.
 
-Errors are against an overkill reference, the paper's mesh (0.01 / 0.05 mm, about 28,500
-unknowns) at stroke rtol 1e-4, meshed with three grading distances (REF_GRADINGS: the
+Errors are against an overkill reference, the paper's mesh (0.01 / 0.05 mm, without
+``mesh.h_edge``, about 30,300 unknowns) at stroke rtol 1e-4, meshed with three grading distances (REF_GRADINGS: the
 same sizes with the nodes elsewhere move its net leakage by 1.6 %), their mean computed once
 with ``--reference`` and kept in ``benchmarks/work_precision_reference.json`` with each
 placement's values and their spread (its mean film profile at t = 2.5 s beside it as
@@ -59,12 +61,13 @@ max pressure error per scheme and element count, as ``scripts/bench_film.py`` me
 Writes benchmarks/work_precision.md (tables, machine, date, load), .csv and .png (wall time
 against the net leakage's error per family; wall time against unknowns). Usage:
 
-    .venv/bin/python scripts/bench_work_precision.py            # 30-60 min here
-    .venv/bin/python scripts/bench_work_precision.py --quick    # rtol and mesh, ~5 min
+    .venv/bin/python scripts/bench_work_precision.py            # about 45 min here
+    .venv/bin/python scripts/bench_work_precision.py --quick    # rtol and mesh, ~8 min
     .venv/bin/python scripts/bench_work_precision.py --families mesh,layer   # some families
     .venv/bin/python scripts/bench_work_precision.py --reference   # the reference, once
     .venv/bin/python scripts/bench_work_precision.py --from-csv    # report again, no runs
-    .venv/bin/python scripts/bench_work_precision.py --add placement   # add a family's rows
+    .venv/bin/python scripts/bench_work_precision.py --add placement   # run a family again
+    .venv/bin/python scripts/bench_work_precision.py --add default,rtol # (and the default)
 """
 import argparse
 import csv
@@ -77,6 +80,8 @@ import sys
 import time
 from datetime import datetime, timezone
 from pathlib import Path
+
+import tomllib
 
 import numpy as np
 
@@ -111,8 +116,9 @@ TARGETS = {"default": 10.0, "paper_fig14_ve_sq_ff": 20.0, "paper mesh": 120.0}  
 # the 'placement' family: the default's element sizes, meshed with these grading distances
 # (mm; the default 0.5) and mirror-symmetric: the same resolution, nodes placed elsewhere
 PLACEMENT_GRADINGS = (0.4, 0.45, 0.55, 0.6)
-# the 'edge' family: the default with mesh.h_edge (mm), at the default grading and those
-EDGE_H = 0.0015
+# the default's mesh.h_edge (mm); the 'edge' family meshes the default at PLACEMENT_GRADINGS
+EDGE_H = tomllib.loads((ROOT / "configs" / "oring_stroke.toml").read_text())["mesh"]["h_edge"]
+DEFAULT = f"0.025 / 0.2 mm, h_edge {EDGE_H:g} mm"      # the default row's mesh (its label)
 BOUNDS = {"e_net": 2e-2, "e_transport": 1e-2, "e_work": 1e-2, "e_peak": 1e-2}
 
 
@@ -120,8 +126,9 @@ def scene_text(mesh=None, name=None, film_scheme=None, base="oring_stroke.toml",
                state_cache=False, layer=None, grading=None, symmetric=False, h_edge=None):
     """The default scene's text with the mesh sizes (contact, bulk), name or film scheme
     replaced, ``layer`` the mesh's layer_depth (mm), ``grading`` its grading_distance (mm),
-    ``symmetric`` its mirror-symmetric variant, ``h_edge`` its mesh.h_edge (mm); without ``state_cache`` steps 1-2 run in
-    full (``[start] cache = false``)."""
+    ``symmetric`` its mirror-symmetric variant, ``h_edge`` its mesh.h_edge (mm; 0: the
+    scene's mesh alone); without ``state_cache`` steps 1-2 run in full (``[start] cache =
+    false``)."""
     s = (ROOT / "configs" / base).read_text()
     if grading is not None:
         if re.search(r"(?m)^grading_distance = ", s):
@@ -151,22 +158,23 @@ def settings(quick):
     d = scene_text()
     out = [("rtol", f"rtol {r:.0e}", d, ["-stroke_ts_rtol", f"{r:g}"])
            for r in (1e-2, 1e-3, 1e-4)]
-    out += [("mesh", f"{m[0]:g} / {m[1]:g} mm", scene_text(m), [])
-            for m in ((0.1, 0.4), (0.05, 0.2), (0.02, 0.2), (0.0175, 0.2), (0.0125, 0.2),
-                      (0.0125, 0.1))]
+    # the scene's mesh alone (h_edge 0): labels without "h_edge"
+    out += [("mesh", f"{m[0]:g} / {m[1]:g} mm", scene_text(m, h_edge=0.0), [])
+            for m in ((0.1, 0.4), (0.05, 0.2), (0.025, 0.2), (0.02, 0.2), (0.0175, 0.2),
+                      (0.0125, 0.2), (0.0125, 0.1))]
     if quick:
         return out
-    out += [("layer", f"{c:g} / 0.2 mm, layer 0.1 mm", scene_text((c, 0.2), layer=0.1), [])
+    out += [("edge", f"{DEFAULT}, grading {g:g} mm", scene_text(grading=g), [])
+            for g in PLACEMENT_GRADINGS]
+    out += [("layer", f"{c:g} / 0.2 mm, layer 0.1 mm", scene_text((c, 0.2), layer=0.1,
+                                                                  h_edge=0.0), [])
             for c in (0.025, 0.02, 0.0175, 0.0125)]
-    out += [("placement", f"0.025 / 0.2 mm, grading {g:g} mm", scene_text(grading=g), [])
-            for g in PLACEMENT_GRADINGS]
-    out += [("placement", "0.025 / 0.2 mm, mirror-symmetric", scene_text(symmetric=True), [])]
+    out += [("placement", f"0.025 / 0.2 mm, grading {g:g} mm",
+             scene_text(grading=g, h_edge=0.0), []) for g in PLACEMENT_GRADINGS]
+    out += [("placement", "0.025 / 0.2 mm, mirror-symmetric",
+             scene_text(symmetric=True, h_edge=0.0), [])]
     out += [("placement", f"0.0125 / 0.1 mm, grading {g:g} mm",
-             scene_text((0.0125, 0.1), grading=g), []) for g in (0.45, 0.55)]
-    edge = f"0.025 / 0.2 mm, h_edge {EDGE_H:g} mm"
-    out += [("edge", edge, scene_text(h_edge=EDGE_H), [])]
-    out += [("edge", f"{edge}, grading {g:g} mm", scene_text(h_edge=EDGE_H, grading=g), [])
-            for g in PLACEMENT_GRADINGS]
+             scene_text((0.0125, 0.1), grading=g, h_edge=0.0), []) for g in (0.45, 0.55)]
     out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 2)]
     out += [("theta", "Crank-Nicolson", d, ["-stroke_ts_type", "theta",
                                             "-stroke_ts_theta_theta", "0.5",
@@ -182,7 +190,7 @@ def settings(quick):
     out += [("cache", "state cache warm", cached, [])]
     out += [("targets", "paper_fig14_ve_sq_ff", scene_text(base="paper_fig14_ve_sq_ff.toml"),
              []),
-            ("targets", "paper mesh", scene_text((0.01, 0.05)), []),
+            ("targets", "paper mesh", scene_text((0.01, 0.05), h_edge=0.0), []),
             ("plain", "default without -log_view", d, [])]
     return out
 
@@ -328,9 +336,10 @@ def table(rows):
 
 
 def growth(rows):
-    """(exponent, prefactor) of wall = c n^k over the mesh family and the default."""
+    """(exponent, prefactor) of wall = c n^k over the mesh family (the scene's mesh alone:
+    the default's refinement at the edges is another kind of mesh)."""
     pts = [(r["unknowns"], r["wall"]) for r in rows
-           if r["family"] in ("mesh", "default") and r.get("unknowns")
+           if r["family"] == "mesh" and r.get("unknowns")
            and r["status"] == "finished"]
     if len(pts) < 3:
         return None
@@ -349,17 +358,18 @@ def plot(rows, fit, path, when):
     for r in rows:
         if r.get("e_net") is not None:
             fams.setdefault(r["family"], []).append(r)
-    names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4", "mesh": "mesh (contact / bulk)",
+    names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4",
+             "mesh": "without mesh.h_edge: mesh (contact / bulk)",
              "bdf": "BDF order 1 / 2", "theta": "Crank-Nicolson", "film": "paper film scheme",
              "lu": "UMFPACK in place of PETSc's LU",
              "targets": "paper mesh at the defaults (one of the reference's 3 placements)",
              "before": "BDF 2 and rtol 1e-3 (the defaults before)",
-             "layer": "mesh with a 0.1 mm layer at h_contact",
+             "layer": "without mesh.h_edge: a 0.1 mm layer at h_contact",
              "plain": "default without -log_view",
-             "placement": "same sizes as the default or 0.0125 / 0.1 mm, nodes placed "
-                          "elsewhere (not joined)",
-             "edge": "the default with mesh.h_edge 0.0015 mm, five placements (not joined)",
-             "default": "default (0.025 / 0.2 mm, BDF 3, rtol 1e-2)"}
+             "placement": "without mesh.h_edge: 0.025 / 0.2 or 0.0125 / 0.1 mm, nodes "
+                          "placed elsewhere (not joined)",
+             "edge": "the default at four other placements (not joined)",
+             "default": f"default ({DEFAULT}, BDF 3, rtol 1e-2)"}
     # one colour per family (the default cycle of ten repeats beyond ten families)
     colours = plt.get_cmap("tab20").colors[::2] + plt.get_cmap("tab20").colors[1::2]
     for i, (fam, rs) in enumerate(fams.items()):
@@ -385,7 +395,7 @@ def plot(rows, fit, path, when):
     if fit is not None:
         k, c, pts = fit
         n, w = np.array(pts, float).T
-        ax[1].loglog(n, w, "o", label="mesh family and default")
+        ax[1].loglog(n, w, "o", label="mesh family (without mesh.h_edge)")
         nn = np.geomspace(n.min(), n.max(), 20)
         ax[1].loglog(nn, c * nn ** k, "-", label=f"fit: wall ~ n^{k:.2f}")
         ax[1].loglog(nn, w[0] * (nn / n[0]) ** 1.5, ":",
@@ -495,7 +505,8 @@ def main():
                 sys.exit(f"--from-run: one output directory per grading distance "
                          f"{', '.join(f'{g:g}' for g in REF_GRADINGS)} mm, in that order")
         else:
-            runs = [run(f"reference, grading {g:g} mm", scene_text((0.01, 0.05), grading=g),
+            runs = [run(f"reference, grading {g:g} mm",
+                        scene_text((0.01, 0.05), grading=g, h_edge=0.0),
                         ["-stroke_ts_rtol", "1e-4"], work / f"reference_{g:g}", log=False,
                         limit=REF_LIMIT) for g in REF_GRADINGS]
         write_reference(reference_from(runs, taken=bool(a.from_run)))
@@ -516,7 +527,9 @@ def main():
             rows += added
             meta = json.loads((work / "meta.json").read_text())
             base = meta.get("measured", re.sub(r" \(the .*\)$", "", when))
-            added = {**meta.get("added", {}), a.add: when_added}
+            again = set(a.add.split(","))      # families measured again drop their dates
+            added = {**{k: w for k, w in meta.get("added", {}).items()
+                        if not set(k.split(",")) <= again}, a.add: when_added}
             when = base + " (" + "; ".join(f"the {f} rows added {w}"
                                           for f, w in added.items()) + ")"
             meta.update(when=when, measured=base, added=added)
@@ -545,7 +558,9 @@ def measure(work, quick, ref, ref_prof, families=None, first=0, default=True):
     # a warm-up run compiles numba's cache and meshes the default (not timed)
     run("warm-up", scene_text(), [], work / "warm-up")
     rows = []
-    todo = [("default", "0.025 / 0.2 mm, BDF 3, rtol 1e-2", scene_text(), [])] if default else []
+    if families is not None and "default" in families:       # --add default,...
+        default = True
+    todo = [("default", f"{DEFAULT}, BDF 3, rtol 1e-2", scene_text(), [])] if default else []
     todo += [t for t in settings(quick) if (families is None or t[0] in families)
              and t[1] != "rtol 1e-02"]
     for k, (fam, label, text, opts) in enumerate(todo, start=first):
@@ -564,8 +579,9 @@ def measure(work, quick, ref, ref_prof, families=None, first=0, default=True):
 
 def reread(work, ref, ref_prof):
     """The rows of the last measurement (benchmarks/work_precision.csv: wall times, memory,
-    counts), their -log_view splits and errors taken again from its work directory."""
-    meta = json.loads((work / "meta.json").read_text())
+    counts), their -log_view splits and film profiles taken again from its work directory
+    where it still holds them (else the CSV's), their errors computed again."""
+    meta = measured_when(work)
     with open(OUT / "work_precision.csv") as f:
         rows = list(csv.DictReader(f))
     for k, r in enumerate(rows):
@@ -577,23 +593,43 @@ def reread(work, ref, ref_prof):
         for key in ("unknowns", "steps", "rejected", "newton", "linear"):
             if r[key] is not None:
                 r[key] = int(r[key])
-        r.update(log_view(work / r["run"] / "log_view.txt"))
+        if (work / r["run"] / "log_view.txt").exists():
+            r.update(log_view(work / r["run"] / "log_view.txt"))
         r["profile"] = profile(work / r["run"] / "out" / "stroke_profiles.csv")
+        film = r.get("e_profile")
         r.update({key: None for key in r if key.startswith("e_")})
         r.update(errors(r, ref, ref_prof))
+        if r["profile"] is None and film is not None:
+            r["e_profile"] = film
     return rows, meta["when"], meta["host"]
 
 
+def measured_when(work):
+    """When and where the last measurement ran: its work directory's meta.json, or (a
+    fresh clone, a cleared /tmp) the header of benchmarks/work_precision.md."""
+    try:
+        return json.loads((work / "meta.json").read_text())
+    except (OSError, ValueError):
+        head = (OUT / "work_precision.md").read_text().splitlines()[2]
+        when, host = re.match(r"(.+? UTC(?: \(.*?\))?); (.*)$",
+                              head.split(". One process per row")[0]).groups()
+        measured = re.sub(r" \(the .*\)$", "", when)
+        added = dict(re.findall(r"the (\S+) rows added ([^;)]+)", when))
+        meta = {"when": when, "host": host, "measured": measured, "added": added}
+        work.mkdir(parents=True, exist_ok=True)
+        (work / "meta.json").write_text(json.dumps(meta))
+        return meta
+
+
 def placement_groups(rows):
-    """Rows of one setting meshed several ways: per setting ("0.025 / 0.2 mm", "0.025 /
-    0.2 mm, h_edge 0.0015 mm"), its default, 'mesh' or 'edge' row and the rows of the same
-    setting with another grading distance or mirror-symmetric; only settings that have
-    such rows."""
+    """Rows of one setting meshed several ways: per setting (DEFAULT, "0.025 / 0.2 mm"),
+    its default or 'mesh' row and the rows of the same setting with another grading
+    distance or mirror-symmetric; only settings that have such rows."""
     groups = {}
     for r in rows:
         if r["family"] not in ("default", "mesh", "placement", "edge") or r.get("e_net") is None:
             continue
-        key = ("0.025 / 0.2 mm" if r["family"] == "default" else
+        key = (DEFAULT if r["family"] == "default" else
                re.sub(r", (grading [0-9.]+ mm|mirror-symmetric)$", "", r["label"]))
         groups.setdefault(key, []).append(r)
     return {k: rs for k, rs in groups.items()
@@ -627,6 +663,44 @@ def placement(rows):
             "0.5, and mirror-symmetric, so that gmsh places the nodes elsewhere at the same "
             "resolution. One row's error is one draw from the spread below, which is the "
             "accuracy of its sizes:", ""] + out
+
+
+# the summary's wording of each family's rows (the README's table)
+SUMMARY_NAMES = {"plain": "the same without -log_view", "cache": "state cache warm (stroke only)",
+                 "rtol": "stroke rtol", "bdf": "", "theta": "", "before": "the defaults before "
+                 "2026-12-03:", "film": "", "lu": "", "mesh": "without h_edge: mesh",
+                 "layer": "without h_edge, layer 0.1 mm:", "targets": ""}
+
+
+def summary(rows):
+    """The short table (the README's): one line per row, the placements of one setting
+    as ranges (the default with its own, 0.025 / 0.2 mm without h_edge with its own)."""
+    head = ["| setting | unknowns | steps (rejected) | wall s | net mm^3 | err net | "
+            "err transports | err friction work | err peak friction |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    e = lambda r, k: fmt(r.get(k), "{:.1e}")                          # noqa: E731
+    out = []
+    groups = placement_groups(rows)
+    for r in rows:
+        if r["family"] in ("edge", "placement"):
+            continue
+        name = ("**default** (" + r["label"] + ")" if r["family"] == "default" else
+                f"{SUMMARY_NAMES.get(r['family'], r['family'])} {r['label']}".strip())
+        out.append(f"| {name} | {fmt(r.get('unknowns'), '{:,}')} | "
+                   f"{fmt(r.get('steps'), '{:,}')} ({fmt(r.get('rejected'), '{:,}')}) | "
+                   f"{r['wall']:.1f} | {fmt(r.get('net'), '{:.3f}')} | {e(r, 'e_net')} | "
+                   f"{e(r, 'e_transport')} | {e(r, 'e_work')} | {e(r, 'e_peak')} |")
+    rng = lambda v, f: (f.format(min(v)) + "-" + f.format(max(v))        # noqa: E731
+                        if min(v) != max(v) else f.format(v[0]))
+    for key, rs in groups.items():
+        name = ("the default" if key == DEFAULT else f"without h_edge: {key}")
+        out.append(f"| {name} meshed {len(rs)} ways (grading distances, mirror-symmetric) | "
+                   f"{rng([r['unknowns'] for r in rs], '{:,}')} | "
+                   f"{rng([r['steps'] for r in rs], '{:,}')} | "
+                   f"{rng([r['wall'] for r in rs], '{:.1f}')} | "
+                   f"{rng([r['net'] for r in rs], '{:.3f}')} | "
+                   + " | ".join(f"up to {max(r[k] for r in rs):.1e}" for k in BOUNDS) + " |")
+    return head + out
 
 
 def report(rows, when, host, quick, ref, slider=None):
@@ -677,17 +751,17 @@ def report(rows, when, host, quick, ref, slider=None):
                      f"{r['e_transport']:.1e}, work {r['e_work']:.1e}, peak friction "
                      f"{r['e_peak']:.1e} (bounds 1e-2)" if r.get("e_net") is not None
                      else ""))
-        group = placement_groups(rows).get("0.025 / 0.2 mm") if name == "default" else None
+        group = placement_groups(rows).get(DEFAULT) if name == "default" else None
         if group:
             lo, hi, worst, held = spread(group)
             md[-1] += (f"; over the {len(group)} placements of its sizes (below) up to net "
                        f"{worst['e_net']:.1e}, transports {worst['e_transport']:.1e}, work "
                        f"{worst['e_work']:.1e}, peak friction {worst['e_peak']:.1e}")
     for key, rs in placement_groups(rows).items():
-        if "h_edge" in key:          # the refined default: its time and its spread
-            r = next(x for x in rs if "grading" not in x["label"])
+        if key == "0.025 / 0.2 mm":   # the default's mesh without the edges' refinement
+            r = next(x for x in rs if x["family"] == "mesh")
             lo, hi, worst, held = spread(rs)
-            md.append(f"- {key}: {r['wall']:.1f} s against {TARGETS['default']:g} s (with "
+            md.append(f"- without mesh.h_edge ({key}): {r['wall']:.1f} s (with "
                       f"-log_view); over its {len(rs)} placements up to net "
                       f"{worst['e_net']:.1e}, transports {worst['e_transport']:.1e}, work "
                       f"{worst['e_work']:.1e}, peak friction {worst['e_peak']:.1e}: the "
@@ -695,6 +769,7 @@ def report(rows, when, host, quick, ref, slider=None):
     if NOTES.exists():
         md += ["", NOTES.read_text().strip()]
     md += placement(rows)
+    md += ["", "## Summary (the README's table)", ""] + summary(rows)
     if fit is not None:
         md += ["", f"Cost growth over the mesh family: wall time ~ n^{fit[0]:.2f} "
                "(sparse LU of a 2-D problem with nested dissection: n^1.5 flops; at these "
