@@ -665,42 +665,47 @@ def placement(rows):
             "accuracy of its sizes:", ""] + out
 
 
-# the summary's wording of each family's rows (the README's table)
-SUMMARY_NAMES = {"plain": "the same without -log_view", "cache": "state cache warm (stroke only)",
-                 "rtol": "stroke rtol", "bdf": "", "theta": "", "before": "the defaults before "
-                 "2026-12-03:", "film": "", "lu": "", "mesh": "without h_edge: mesh",
-                 "layer": "without h_edge, layer 0.1 mm:", "targets": ""}
+# the summary's wording of a family's rows ("{label}" by default) and its order
+SUMMARY = {"default": "**default** ({label})", "plain": "the same without -log_view",
+           "cache": "state cache warm (stroke only)", "rtol": "stroke {label}",
+           "before": "the defaults before 2026-12-03 ({label})",
+           "lu": "{label} in place of PETSc's LU", "film": "the {label} for the film",
+           "mesh": "without h_edge: mesh {label}", "layer": "without h_edge: {label}"}
+SUMMARY_ORDER = ("default", "edge", "plain", "cache", "rtol", "bdf", "theta", "before",
+                 "film", "lu", "mesh", "placement", "layer", "targets")
 
 
 def summary(rows):
     """The short table (the README's): one line per row, the placements of one setting
-    as ranges (the default with its own, 0.025 / 0.2 mm without h_edge with its own)."""
+    as one line of ranges (the default with its own, after it; a size without h_edge
+    with its own)."""
     head = ["| setting | unknowns | steps (rejected) | wall s | net mm^3 | err net | "
             "err transports | err friction work | err peak friction |",
             "|---|---|---|---|---|---|---|---|---|"]
     e = lambda r, k: fmt(r.get(k), "{:.1e}")                          # noqa: E731
-    out = []
+    rng = lambda v, f: (f.format(min(v)) + "-" + f.format(max(v))        # noqa: E731
+                        if min(v) != max(v) else f.format(v[0]))
     groups = placement_groups(rows)
+    lines = {f: [] for f in SUMMARY_ORDER}
     for r in rows:
         if r["family"] in ("edge", "placement"):
             continue
-        name = ("**default** (" + r["label"] + ")" if r["family"] == "default" else
-                f"{SUMMARY_NAMES.get(r['family'], r['family'])} {r['label']}".strip())
-        out.append(f"| {name} | {fmt(r.get('unknowns'), '{:,}')} | "
-                   f"{fmt(r.get('steps'), '{:,}')} ({fmt(r.get('rejected'), '{:,}')}) | "
-                   f"{r['wall']:.1f} | {fmt(r.get('net'), '{:.3f}')} | {e(r, 'e_net')} | "
-                   f"{e(r, 'e_transport')} | {e(r, 'e_work')} | {e(r, 'e_peak')} |")
-    rng = lambda v, f: (f.format(min(v)) + "-" + f.format(max(v))        # noqa: E731
-                        if min(v) != max(v) else f.format(v[0]))
+        name = SUMMARY.get(r["family"], "{label}").format(label=r["label"])
+        lines.setdefault(r["family"], []).append(
+            f"| {name} | {fmt(r.get('unknowns'), '{:,}')} | "
+            f"{fmt(r.get('steps'), '{:,}')} ({fmt(r.get('rejected'), '{:,}')}) | "
+            f"{r['wall']:.1f} | {fmt(r.get('net'), '{:.3f}')} | {e(r, 'e_net')} | "
+            f"{e(r, 'e_transport')} | {e(r, 'e_work')} | {e(r, 'e_peak')} |")
     for key, rs in groups.items():
-        name = ("the default" if key == DEFAULT else f"without h_edge: {key}")
-        out.append(f"| {name} meshed {len(rs)} ways (grading distances, mirror-symmetric) | "
-                   f"{rng([r['unknowns'] for r in rs], '{:,}')} | "
-                   f"{rng([r['steps'] for r in rs], '{:,}')} | "
-                   f"{rng([r['wall'] for r in rs], '{:.1f}')} | "
-                   f"{rng([r['net'] for r in rs], '{:.3f}')} | "
-                   + " | ".join(f"up to {max(r[k] for r in rs):.1e}" for k in BOUNDS) + " |")
-    return head + out
+        name = (f"the default at {len(rs)} placements (grading distances)" if key == DEFAULT
+                else f"without h_edge: {key} at {len(rs)} placements")
+        lines["edge" if key == DEFAULT else "placement"].append(
+            f"| {name} | {rng([r['unknowns'] for r in rs], '{:,}')} | "
+            f"{rng([r['steps'] for r in rs], '{:,}')} | "
+            f"{rng([r['wall'] for r in rs], '{:.1f}')} | "
+            f"{rng([r['net'] for r in rs], '{:.3f}')} | "
+            + " | ".join(f"up to {max(r[k] for r in rs):.1e}" for k in BOUNDS) + " |")
+    return head + [x for f in lines for x in lines[f]]
 
 
 def report(rows, when, host, quick, ref, slider=None):
