@@ -5,7 +5,7 @@ Every O-ring setting is one ``sealts run`` process, timed whole as a user meets 
 cache warm, the mesh cached, nothing of steps 1-2 reused), one after another, nothing else
 of sealts running beside. The defaults are ``configs/oring_stroke.toml`` (0.025 / 0.2 mm
 mesh refined to ``mesh.h_edge`` = 0.0015 mm at the pressurised contact's edges, the film's
-inlets; BDF 3, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 8,000 unknowns
+inlets; BDF 3, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 10,000 unknowns
 and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
 
 * ``rtol``: the stroke's TS tolerance (``-stroke_ts_rtol``) 1e-2, 1e-3, 1e-4;

@@ -51,10 +51,12 @@ from ..core import Counters, SolveError, StepInfo, StepTooSmall
 # the solvers in force, by options prefix, as set up last in this process (for the summary)
 SOLVERS = {}
 # the default serial direct solver: PETSc's own LU with AMD ordering below this many
-# unknowns, UMFPACK from there on (scripts/bench_lu.py --stroke-meshes; README, "Direct
-# solver"). PETSc's LU does not pivot: a factorisation that meets a zero pivot switches the
-# problem to UMFPACK for good (Problem._fall_back_to_umfpack) and the solve is retried
-PETSC_LU_BELOW = 8000
+# unknowns, UMFPACK from there on (scripts/bench_lu.py --stroke --stroke-meshes: the
+# default's refined mesh, 8,199 unknowns, is AMD's; 0.0125 / 0.1 mm, 11,055, UMFPACK's;
+# docs/petsc-build.md). PETSc's LU does not pivot: a factorisation that meets a zero pivot
+# switches the problem to UMFPACK for good (Problem._fall_back_to_umfpack) and the solve is
+# retried
+PETSC_LU_BELOW = 10000
 _ZERO_PIVOT = (PETSc.PC.FailedReason.FACTOR_NUMERIC_ZEROPIVOT,
                PETSc.PC.FailedReason.FACTOR_STRUCT_ZEROPIVOT)
 # a crawl (Problem._check_pace): the last PACE_WINDOW accepted steps' pace would need more
