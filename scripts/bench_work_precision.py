@@ -27,7 +27,8 @@ and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
   -stroke_ts_theta_endpoint``);
 * ``film``: the paper's film scheme (``film.scheme = "paper"``);
 * ``lu``: UMFPACK in place of PETSc's own LU (``-pc_factor_mat_solver_type umfpack`` for
-  every solver; the default until 2026-12-04);
+  steps 1-2, the stroke's start and the stroke, LU_UMFPACK: all but the small transfer_ and
+  stroke_film_ solves; the default until 2026-12-04);
 * ``cache``: the default with the pressurised-state cache warm (sealts/steps/state_cache.py;
   every other row runs steps 1-2, ``[start] cache = false``);
 * ``before``: BDF 2 with stroke rtol 1e-3 (the defaults until 2026-12-03);
@@ -353,7 +354,7 @@ def plot(rows, fit, path, when):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(1, 2, figsize=(12, 6.8))
-    default = next(r for r in rows if r["family"] == "default")
+    default = next((r for r in rows if r["family"] == "default"), None)
     fams = {}
     for r in rows:
         if r.get("e_net") is not None:
@@ -362,13 +363,15 @@ def plot(rows, fit, path, when):
              "mesh": "without mesh.h_edge: mesh (contact / bulk)",
              "bdf": "BDF order 1 / 2", "theta": "Crank-Nicolson", "film": "paper film scheme",
              "lu": "UMFPACK in place of PETSc's LU",
-             "targets": "paper mesh at the defaults (one of the reference's 3 placements)",
+             "targets": f"paper mesh without h_edge at the defaults (one of the "
+                        f"reference's {len(REF_GRADINGS)} placements)",
              "before": "BDF 2 and rtol 1e-3 (the defaults before)",
              "layer": "without mesh.h_edge: a 0.1 mm layer at h_contact",
              "plain": "default without -log_view",
              "placement": "without mesh.h_edge: 0.025 / 0.2 or 0.0125 / 0.1 mm, nodes "
                           "placed elsewhere (not joined)",
-             "edge": "the default at four other placements (not joined)",
+             "edge": f"the default at {len(PLACEMENT_GRADINGS)} other placements (not "
+                     "joined)",
              "default": f"default ({DEFAULT}, BDF 3, rtol 1e-2)"}
     # one colour per family (the default cycle of ten repeats beyond ten families)
     colours = plt.get_cmap("tab20").colors[::2] + plt.get_cmap("tab20").colors[1::2]
@@ -404,8 +407,8 @@ def plot(rows, fit, path, when):
     ax[1].set_ylabel("whole-process wall time [s]")
     ax[1].set_title("cost growth", fontsize=10)
     ax[1].legend(fontsize=8)
-    fig.suptitle(f"sealts run time against error ({when}; default {default['wall']:.1f} s)",
-                 fontsize=10)
+    fig.suptitle(f"sealts run time against error ({when}"
+                 + (f"; default {default['wall']:.1f} s)" if default else ")"), fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
@@ -428,8 +431,8 @@ def reference_from(runs, taken=False):
         for g, r in zip(REF_GRADINGS, runs)]
     for k in ("unknowns", "steps", "wall"):
         keep[k] = float(np.mean([r[k] for r in runs]))
-    keep["setting"] = (f"paper's mesh 0.01 / 0.05 mm, stroke rtol 1e-4, otherwise the "
-                       f"defaults; the mean over grading distances "
+    keep["setting"] = (f"paper's mesh 0.01 / 0.05 mm without mesh.h_edge, stroke rtol "
+                       f"1e-4, otherwise the defaults; the mean over grading distances "
                        f"{', '.join(f'{g:g}' for g in REF_GRADINGS)} mm")
     keep["date"] = datetime.now(timezone.utc).strftime("%Y-%m-%d")
     keep["machine"] = (f"{platform.node()}, {os.cpu_count()} cores, Python "
@@ -660,13 +663,13 @@ def placement(rows):
     return ["", "## Where the mesher puts the nodes ('placement')", "",
             "The same element sizes meshed several ways: grading distances of "
             f"{min(PLACEMENT_GRADINGS):g} to {max(PLACEMENT_GRADINGS):g} mm for the default "
-            "0.5, and mirror-symmetric, so that gmsh places the nodes elsewhere at the same "
-            "resolution. One row's error is one draw from the spread below, which is the "
+            "0.5 (and, without h_edge, mirror-symmetric), so that gmsh places the nodes "
+            "elsewhere at the same resolution. One row's error is one draw from the spread below, which is the "
             "accuracy of its sizes:", ""] + out
 
 
 # the summary's wording of a family's rows ("{label}" by default) and its order
-SUMMARY = {"default": "**default** ({label})", "plain": "the same without -log_view",
+SUMMARY = {"default": "**default** ({label})", "plain": "the default without -log_view",
            "cache": "state cache warm (stroke only)", "rtol": "stroke {label}",
            "before": "the defaults before 2026-12-03 ({label})",
            "lu": "{label} in place of PETSc's LU", "film": "the {label} for the film",
@@ -727,7 +730,8 @@ def report(rows, when, host, quick, ref, slider=None):
         w = csv.DictWriter(f, cols, extrasaction="ignore")
         w.writeheader()
         w.writerows(rows)
-    default = next((r for r in rows if r["family"] == "plain"), rows[0])
+    default = next((r for r in rows if r["family"] == "plain"),
+                   next((r for r in rows if r["family"] == "default"), None))
     md = [f"# Run time against error (scripts/bench_work_precision.py{' --quick' if quick else ''})",
           "", f"{when}; {host}. One process per row, one after another, whole-process wall "
           "time (numba cache warm, mesh cached, steps 1-2 run in every row but 'cache'). "
@@ -764,7 +768,9 @@ def report(rows, when, host, quick, ref, slider=None):
                        f"{worst['e_work']:.1e}, peak friction {worst['e_peak']:.1e}")
     for key, rs in placement_groups(rows).items():
         if key == "0.025 / 0.2 mm":   # the default's mesh without the edges' refinement
-            r = next(x for x in rs if x["family"] == "mesh")
+            r = next((x for x in rs if x["family"] == "mesh"), None)
+            if r is None:
+                continue
             lo, hi, worst, held = spread(rs)
             md.append(f"- without mesh.h_edge ({key}): {r['wall']:.1f} s (with "
                       f"-log_view); over its {len(rs)} placements up to net "
