@@ -33,7 +33,9 @@ def test_key_changes_with_every_input_of_steps_1_2_and_only_with_them(tmp_path,
                       "snes_converged_reason": ""}) == k0
     # what steps 1-2 read: another state each
     other = [sec("fluid", p_in=2.0), sec("fluid", p_out=0.5), sec("fluid", p_crit=0.2),
-             sec("mesh", h_contact=0.05), sec("mesh", symmetric=True),
+             sec("mesh", h_contact=0.05), sec("mesh", h_edge=0.002),
+             sec("mesh", h_edge=0.0), sec("mesh", edge_span=0.1),
+             sec("mesh", symmetric=True, h_edge=0.0),
              sec("material", c10=1.1), sec("material", temperature_rise=10.0),
              sec("asperity", h_mix=8e-4), sec("asperity", p_mix=10.0),
              sec("groove", diameter=59.5), sec("groove", clearance=0.1),
