@@ -4,9 +4,11 @@ orderings) against UMFPACK, KLU and SuperLU.
 The matrices: the 2D plane-strain stiffness of a structured Q1 mesh with nu = 0.49, clamped
 at one edge (5k to 80k unknowns), like the seal's displacement block; with ``--stroke``
 also the default cycle's coupled stroke Jacobian at the stroke's start (seal, film, leakage
-and friction; mounts and pressurises first, about 20 s), and with ``--stroke-meshes`` that
-Jacobian on four meshes (0.025 / 0.2 to the paper's 0.01 / 0.05 mm, 3.5k to 30k unknowns;
-steps 1-2 from the state cache where an earlier run left them): the measurements behind
+and friction, on the scene's mesh refined at the contact's edges, 8.2k unknowns; mounts,
+pressurises and carries the state to the refined mesh first, about 30 s), and with
+``--stroke-meshes`` that Jacobian on four meshes without the refinement (0.025 / 0.2 to the
+paper's 0.01 / 0.05 mm, 3.5k to 30k unknowns; tests/conftest.coarsened; steps 1-2 from the
+state cache where an earlier run left them): the measurements behind
 PETSC_LU_BELOW in sealts/problem/problem.py (PETSc's LU with AMD against UMFPACK). For each solver it
 times the first set-up (symbolic + numeric factorisation and one solve) and a
 refactorisation (numeric factorisation and one solve with the pattern kept: what every

@@ -21,7 +21,8 @@ mesh cache filled in), ``log.txt`` and sealts' own output. Usage:
     .venv/bin/python scripts/paper_report.py [--coarse] [--out DIR] [--reuse] [--report-only]
 
 ``--coarse`` runs the 0.1 / 0.4 mm mesh (a quick check, about 7 min on one core) instead of
-the default 0.025 / 0.2 mm one of ``configs/oring_stroke.toml``. ``--reuse`` keeps every run
+the default 0.025 / 0.2 mm (the sizes of ``configs/oring_stroke.toml``, without its
+refinement at the contact's edges, ``mesh.h_edge``, which was measured on that cycle only). ``--reuse`` keeps every run
 whose scene copy is unchanged and finished; ``--report-only`` only rewrites the report from
 the runs already in OUT.
 """

@@ -28,7 +28,9 @@ def label(r):
     scene = r.summary["provenance"]["scene"]
     law = scene["asperity"]["law"]
     law = "Greenwood-Williamson" if law == "greenwood-williamson" else "exponential (Eq. 44)"
-    return f"{law}, contact {scene['mesh']['h_contact']:g} mm"
+    edge = scene["mesh"].get("h_edge", 0.0)
+    return (f"{law}, contact {scene['mesh']['h_contact']:g} mm"
+            + (f", {1e3 * edge:g} um at its edges" if edge else ""))
 
 
 def nearest(profiles, t):

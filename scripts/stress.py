@@ -18,7 +18,7 @@ FILE`` also writes the table as Markdown with the machine's load. Usage:
 
 Factors (``--list`` prints the cases): ``pressure`` p_in 0, 1, 5, 10, 20, 30, 40 MPa;
 ``speed`` amplitudes 1, 100, 2000 mm/s; ``rough`` h_mix a tenth (a smoother rod; also on
-the default scene's 0.025 mm contact mesh) and ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction;
+the default scene's 0.025 / 0.2 mm sizes) and ten times the paper's; ``friction`` mu_s and groove.mu 0.05 and 0.5, no friction;
 ``rtol`` 1e-2 and 1e-4; ``velocity`` constant, ramp-hold and an abrupt start-stop-reverse
 table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
 flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
@@ -105,7 +105,8 @@ FACTORS = {
              for p in (5.0, 20.0)],
     "mesh": [("mesh 0.1 / 0.4", {"mesh": {"h_contact": 0.1, "h_bulk": 0.4}}),
              ("mesh 0.025 / 0.2", {"mesh": {"h_contact": 0.025, "h_bulk": 0.2}})],
-    # the high pressures on the mesh a user runs first (the shipped scene's)
+    # the high pressures on the shipped scene's sizes without its edges' refinement (the
+    # shipped mesh until 2026-12-05; the 'edge' factor is the shipped mesh)
     "scene_mesh": [(f"p_in {p:g} MPa{a}, mesh 0.025 / 0.2",
                     {"fluid": {"p_in": float(p)}, "mesh": {"h_contact": 0.025},
                      "stroke": {"v_max": float(v)}})
