@@ -62,7 +62,7 @@ max pressure error per scheme and element count, as ``scripts/bench_film.py`` me
 Writes benchmarks/work_precision.md (tables, machine, date, load), .csv and .png (wall time
 against the net leakage's error per family; wall time against unknowns). Usage:
 
-    .venv/bin/python scripts/bench_work_precision.py            # about 45 min here
+    .venv/bin/python scripts/bench_work_precision.py            # about 55 min here
     .venv/bin/python scripts/bench_work_precision.py --quick    # rtol and mesh, ~8 min
     .venv/bin/python scripts/bench_work_precision.py --families mesh,layer   # some families
     .venv/bin/python scripts/bench_work_precision.py --reference   # the reference, once
@@ -353,7 +353,7 @@ def plot(rows, fit, path, when):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(1, 2, figsize=(12, 6.8))
+    fig, ax = plt.subplots(1, 2, figsize=(12, 8.4))
     default = next((r for r in rows if r["family"] == "default"), None)
     fams = {}
     for r in rows:
@@ -393,8 +393,9 @@ def plot(rows, fit, path, when):
     ax[0].set_xlabel("whole-process wall time [s]")
     ax[0].set_ylabel("error of the net leakage against the reference")
     ax[0].set_title("paper O-ring cycle, 1 MPa, 500 mm/s", fontsize=10)
-    # below the axes: inside, it hid the points near the bound
-    ax[0].legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2)
+    # below both axes, across the figure: inside, it hid the points near the bound; under
+    # the left axes alone, its long names ran off the figure
+    fig.legend(*ax[0].get_legend_handles_labels(), fontsize=7, loc="lower center", ncol=2)
     if fit is not None:
         k, c, pts = fit
         n, w = np.array(pts, float).T
@@ -409,7 +410,7 @@ def plot(rows, fit, path, when):
     ax[1].legend(fontsize=8)
     fig.suptitle(f"sealts run time against error ({when}"
                  + (f"; default {default['wall']:.1f} s)" if default else ")"), fontsize=10)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.22, 1, 1))
     fig.savefig(path, dpi=120)
     plt.close(fig)
 
@@ -694,6 +695,8 @@ def summary(rows):
         if r["family"] in ("edge", "placement"):
             continue
         name = SUMMARY.get(r["family"], "{label}").format(label=r["label"])
+        if r["status"] != "finished":
+            name += f" ({r['status']} at {r['wall']:.0f} s)"
         lines.setdefault(r["family"], []).append(
             f"| {name} | {fmt(r.get('unknowns'), '{:,}')} | "
             f"{fmt(r.get('steps'), '{:,}')} ({fmt(r.get('rejected'), '{:,}')}) | "
