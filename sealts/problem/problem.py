@@ -57,6 +57,11 @@ SOLVERS = {}
 # switches the problem to UMFPACK for good (Problem._fall_back_to_umfpack) and the solve is
 # retried
 PETSC_LU_BELOW = 10000
+# ... and a step whose Newton solve failed this many times in a row (TS retrying it smaller
+# each time) goes on with UMFPACK too: without pivoting, PETSc's LU can lose the thin films'
+# rows at high pressure without meeting an exact zero (the shipped mesh at 20 MPa: NaN
+# iterates from t = 0.028 s, where UMFPACK goes through)
+LU_FAILURES = 4
 _ZERO_PIVOT = (PETSc.PC.FailedReason.FACTOR_NUMERIC_ZEROPIVOT,
                PETSc.PC.FailedReason.FACTOR_STRUCT_ZEROPIVOT)
 # a crawl (Problem._check_pace): the last PACE_WINDOW accepted steps' pace would need more
@@ -141,8 +146,10 @@ class Problem:
         self.counters = Counters()
         # PETSc's LU by default and not by choice: it may give way to UMFPACK
         self._lu_may_fall_back = False
-        # the time of that switch, if it happened (a resumed run carries it on)
+        # the time of that switch, if it happened (a resumed run carries it on), and why
         self.lu_fallback = None
+        self.lu_fallback_why = "a zero pivot of PETSc's LU"
+        self._step_failures = (None, 0)   # (the step's start time, TS's SNES failures then)
         self._set_defaults = []       # options set by _default_option, dropped after use
         self._callback_error = None   # a term's exception in a callback (_guarded)
         # more TS defaults of this problem (option name without prefix -> value); the
@@ -312,6 +319,10 @@ class Problem:
         return err
 
     def ifunction(self, ts, t, U, Udot, F):
+        if self._lu_may_fall_back:    # a step that keeps failing leaves PETSc's LU
+            why = self._failing_step(ts)
+            if why is not None:
+                self._fall_back_to_umfpack(ts.getSNES(), ts.getTime(), why)
         self._guarded("residual", t, self._assemble_residual, t, U, Udot, F)
         self.counters.residuals += 1
 
@@ -361,7 +372,7 @@ class Problem:
         SOLVERS[self.prefix or ""] = out = _solver_in_force(snes, ts)
         if self.lu_fallback is not None:
             out["pc_factor_mat_solver_type"] = (
-                f"umfpack (from t = {self.lu_fallback:.6g}: a zero pivot of PETSc's LU)")
+                f"umfpack (from t = {self.lu_fallback:.6g}: {self.lu_fallback_why})")
 
     def _own_ordering(self, pc):
         """A factor package other than PETSc's orders the matrix itself (PETSc's
@@ -372,16 +383,18 @@ class Problem:
         if not PETSc.Options(self.prefix).hasName("pc_factor_mat_ordering_type"):
             pc.setFactorOrdering("external")
 
-    def _fall_back_to_umfpack(self, snes, t):
+    def _fall_back_to_umfpack(self, snes, t, why=None):
         """If the last linear solve of ``snes`` failed on a zero pivot of PETSc's default
-        LU (it does not pivot), switch its factorisation to UMFPACK (which does) for the
-        rest of this problem's solves; True if it did."""
+        LU (it does not pivot), or ``why`` names another reason, switch its factorisation
+        to UMFPACK (which pivots) for the rest of this problem's solves; True if it did."""
         ksp = snes.getKSP()
         pc = ksp.getPC()
-        if (not self._lu_may_fall_back
-                or ksp.getConvergedReason() != PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED
-                or pc.getFailedReason() not in _ZERO_PIVOT):
+        if not self._lu_may_fall_back or (why is None and (
+                ksp.getConvergedReason() != PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED
+                or pc.getFailedReason() not in _ZERO_PIVOT)):
             return False
+        if why is not None:
+            self.lu_fallback_why = why
         pc.reset()                    # the factor goes; SNES sets the operators again
         pc.setFactorSolverType("umfpack")
         self._own_ordering(pc)
@@ -389,6 +402,20 @@ class Problem:
         self.lu_fallback = float(t)
         self._solvers_in_force(snes, getattr(self, "_ts", None))
         return True
+
+    def _failing_step(self, ts):
+        """The reason to leave PETSc's LU if this step has failed LU_FAILURES Newton solves
+        since it began (TS retries a step from the same time), else None. TS counts its
+        SNES failures over one solve(), and they only change between Newton solves, so the
+        switch comes at a solve's first residual, before its first factorisation."""
+        t, failures = ts.getTime(), ts.getSNESFailures()
+        t0, at_start = self._step_failures
+        if t != t0 or failures < at_start:
+            self._step_failures = (t, failures)
+            return None
+        if failures - at_start < LU_FAILURES:
+            return None
+        return f"{failures - at_start} failed Newton solves in a row with PETSc's LU"
 
     def _default_schur(self, ksp):
         """Prony internal variables first, displacements second: their own block A00 is
@@ -504,7 +531,8 @@ class Problem:
         self._arm_lu_fallback(ts.getSNES())
         if self._lu_may_fall_back:
             # before each Newton iteration: a step whose factorisation met a zero pivot
-            # failed, and TS retries it (smaller) with UMFPACK
+            # failed, and TS retries it (smaller) with UMFPACK (a step that failed
+            # LU_FAILURES times in a row: ifunction, which every attempt calls first)
             ts.getSNES().setUpdate(lambda snes, its: self._fall_back_to_umfpack(
                 snes, ts.getTime()))
         self._solvers_in_force(ts.getSNES(), ts)
@@ -796,6 +824,7 @@ class Problem:
             self.counters = Counters(**{k: int(v) for k, v in resume["counters"].items()})
             if resume.get("lu_fallback", -1.0) >= 0.0:     # on with UMFPACK, as that run
                 self.lu_fallback = float(resume["lu_fallback"])
+                self.lu_fallback_why = "in the run this one resumes"
             self._offset = (int(resume["step"]), int(resume["newton"]))
             last[0] = float(t0)
 
