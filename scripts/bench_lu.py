@@ -97,10 +97,11 @@ def time_solver(A, b, solver, ordering, repeat):
 STROKE_MESHES = [(0.025, 0.2), (0.0125, 0.2), (0.0125, 0.1), (0.01, 0.05)]
 
 
-def stroke_jacobian(mesh=None):
+def stroke_jacobian(mesh=None, scheme="fv"):
     """The default cycle's stroke Jacobian at the stroke's start (TS shift of a 1e-4 s
     backward-Euler step); ``mesh``: (contact, bulk) element sizes in place of the scene's,
-    steps 1-2 then from the state cache if an earlier run left them."""
+    steps 1-2 then from the state cache if an earlier run left them; ``scheme``: the film
+    scheme."""
     import sys
     from pathlib import Path
     root = Path(__file__).resolve().parents[1]
@@ -110,9 +111,11 @@ def stroke_jacobian(mesh=None):
     from sealts.steps.procedure import new_state, run_steps, steps_1_2
     from sealts.steps.state_cache import StateCache
     if mesh is None:
-        state = prepare(scene("oring_stroke", output={"progress": False}))
+        state = prepare(scene("oring_stroke", film={"scheme": scheme},
+                              output={"progress": False}))
     else:
-        s = scene("oring_stroke", mesh={"h_contact": mesh[0], "h_bulk": mesh[1]})
+        s = scene("oring_stroke", mesh={"h_contact": mesh[0], "h_bulk": mesh[1]},
+                  film={"scheme": scheme})
         state = run_steps(steps_1_2(s, StateCache.for_scene(s, {}, "run")), new_state(s))
     step = stroke_of(state)
     pb = step.problem
@@ -145,13 +148,16 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--stroke", action="store_true",
                     help="also the default cycle's stroke Jacobian (mounts first)")
+    ap.add_argument("--film-scheme", default="fv", choices=("fv", "paper"),
+                    help="the film scheme of the stroke Jacobians (default fv)")
     ap.add_argument("--stroke-meshes", action="store_true",
                     help="also the stroke Jacobian on the meshes " + ", ".join(
                         f"{c:g} / {b:g}" for c, b in STROKE_MESHES) + " mm")
     args = ap.parse_args()
-    matrices = [("stroke Jacobian", stroke_jacobian())] if args.stroke else []
+    f = args.film_scheme
+    matrices = [(f"stroke Jacobian ({f})", stroke_jacobian(scheme=f))] if args.stroke else []
     if args.stroke_meshes:
-        matrices += [(f"stroke Jacobian, {c:g} / {b:g} mm", stroke_jacobian((c, b)))
+        matrices += [(f"stroke Jacobian ({f}), {c:g} / {b:g} mm", stroke_jacobian((c, b), f))
                      for c, b in STROKE_MESHES]
     for nx in args.sizes:
         n, rows, cols, vals = q1_plane_strain(nx)

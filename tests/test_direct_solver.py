@@ -113,6 +113,34 @@ def test_default_solver_by_size(n, solver):
     assert pb.lu_fallback is None
 
 
+@pytest.mark.parametrize("m, solver", [(problem_module.PETSC_LU_DENSITY - 2, "petsc"),
+                                       (problem_module.PETSC_LU_DENSITY + 2, "umfpack")])
+def test_a_dense_jacobian_is_umfpacks(m, solver):
+    """Small but dense (m nonzeros per row, a band about the diagonal, diagonally dominant):
+    below PETSC_LU_DENSITY per row PETSc's LU, above it UMFPACK; both solve it."""
+    n = 200
+    off = np.arange(m) - m // 2
+    rows = np.repeat(np.arange(n), m)
+    cols = (rows + np.tile(off, n)) % n
+
+    class Band(Term):
+        def __init__(self):
+            self.rows, self.cols = rows, cols
+            self.vals = np.where(rows == cols, 2.0 * m, 1.0)
+
+        def add_residual(self, t, u, udot, f):
+            np.add.at(f, rows, self.vals * u[cols])
+            f -= 1.0
+
+        def jacobian_values(self, t, u, udot, shift):
+            return self.vals
+
+    pb = Problem(n, [Band()], snes_atol=1e-12)
+    u = pb.solve_steady(np.zeros(n))
+    assert u == pytest.approx(np.full(n, 1.0 / (3.0 * m - 1.0)), rel=1e-10)
+    assert problem_module.SOLVERS[""]["pc_factor_mat_solver_type"] == solver
+
+
 def test_a_resumed_run_goes_on_with_umfpack():
     """A run stopped after its switch and resumed from the stop's snapshot goes on with
     UMFPACK (no second zero pivot, no second failed step) and ends where the uninterrupted
