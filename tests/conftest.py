@@ -13,7 +13,7 @@ CONFIGS = ROOT / "configs"
 sys.path.insert(0, str(Path(__file__).parent))
 
 
-def coarsened(name, sections):
+def coarsened(sections):
     """The sections with the rule for coarsened meshes: a test that sets a scene's mesh
     sizes (h_contact or h_bulk) and not its h_edge gets ``h_edge = 0``. The shipped O-ring
     cycle refines its contact's edges to micrometres (mesh.h_edge), which would cost a
@@ -21,9 +21,6 @@ def coarsened(name, sections):
     the refinement sets h_edge itself."""
     mesh = sections.get("mesh")
     if not isinstance(mesh, dict) or "h_edge" in mesh or not {"h_contact", "h_bulk"} & set(mesh):
-        return sections
-    shipped = tomllib.loads((CONFIGS / f"{name}.toml").read_text()).get("mesh", {})
-    if not shipped.get("h_edge", 0.0):
         return sections
     return {**sections, "mesh": {**mesh, "h_edge": 0.0}}
 
@@ -34,7 +31,7 @@ def scene(name, **sections):
     from sealts.scene.schema import scene_from_table
     table = tomllib.loads((CONFIGS / f"{name}.toml").read_text())
     table = copy.deepcopy(table)
-    sections = coarsened(name, sections)
+    sections = coarsened(sections)
     for sec, values in sections.items():
         if isinstance(values, dict):
             table.setdefault(sec, {}).update(values)
@@ -61,7 +58,7 @@ def config_text(name, **sections):
     missing section at the end. Edits by key, so a changed value in the shipped file cannot
     silently escape a test's coarsening. Coarsened meshes as ``coarsened`` says."""
     lines = (CONFIGS / f"{name}.toml").read_text().splitlines()
-    todo = {sec: dict(values) for sec, values in coarsened(name, sections).items()}
+    todo = {sec: dict(values) for sec, values in coarsened(sections).items()}
     out, sec = [], None
     for line in lines:
         head = line.strip()
