@@ -1,6 +1,8 @@
 """Physical stops: the rod-side guard (sealts.contact.rod_side_guard) for a node off the rod
-side inside the rod and for the rod side folding over (the 40 MPa O-ring squeezed into the
-corner between rod and groove wall, benchmarks/stress.md); blow-by (sealts.solid.pressure)."""
+side inside the rod and for the rod side folding over (along the rod, where the film cannot
+follow; up a groove wall, the 40 MPa O-ring's crease in the corner between rod and wall
+when the surface has no self-contact, benchmarks/stress.md); blow-by
+(sealts.solid.pressure)."""
 import numpy as np
 import pytest
 
@@ -24,7 +26,25 @@ def test_a_fold_of_the_rod_side_stops_the_run_and_says_where():
     with pytest.raises(SolveError) as e:
         guard.accepted(1.5, u)
     assert "at t = 1.5 the rod side folds over between nodes 2 and 3" in str(e.value)
-    assert "self-contact" in str(e.value)
+    assert "the film (a function of the axial position) cannot follow" in str(e.value)
+
+
+def test_a_crease_up_the_wall_stops_without_self_contact_and_not_with_it():
+    """The chain runs up a wall and turns back by 6 um radially 50-100 um above the rod: a
+    crease. Without the surface's self-contact its faces would pass through each other:
+    a stop naming seal.self_contact; with it (creases=True) the crease is held, no stop;
+    the same turn-back at the rod stops either way (the film)."""
+    side, u = chain()
+    for k, dr in enumerate((0.05, 0.10, 0.094), start=3):
+        u[side.ur[k]] = dr                              # up the wall, radially ...
+        u[side.uz[k]] = 0.15 - side.Z[k]                # ... its nodes all at z = 0.15
+    u[side.uz[5]] -= 0.006                              # node 5 6 um back along z ...
+    with pytest.raises(SolveError, match='seal.self_contact = "on" closes the crease'):
+        RodSideGuard(side, depth=7e-4).accepted(0.0, u)
+    RodSideGuard(side, depth=7e-4, creases=True).accepted(0.0, u)
+    u[side.ur[4]] = u[side.ur[5]] = 0.0                 # ... the same turn-back on the rod
+    with pytest.raises(SolveError, match="cannot follow"):
+        RodSideGuard(side, depth=7e-4, creases=True).accepted(0.0, u)
 
 
 def test_nodes_pressed_flat_against_a_wall_are_not_a_fold():

@@ -6,12 +6,17 @@ into the rod means the chain no longer covers the contact, and nothing stops the
 from passing through: a run would only crawl on (dt ~ 1e-7 s). A term without rows: its
 post-step hook ``accepted`` checks every accepted state.
 
-A fold: squeezed into the corner between rod and groove wall (40 MPa on the paper's O-ring
-with no clearance), the rod side's surface buckles and an element of the chain turns over:
-its current axial length against the reference order falls below -FOLD of its reference
-length, and the element points backwards along the rod (its axial length below -BACK of
-its current length). The seal then touches itself, which the model does not include: the
-run stops and says where. Where the rod side runs up a groove wall, its nodes are pressed
+A fold: an element of the chain near the rod turns over: its current axial length against
+the reference order falls below -FOLD of its reference length, and the element points
+backwards along the rod (its axial length below -BACK of its current length). The film is
+a function of the axial position along the rod and cannot follow: the run stops and says
+where. Further than FILM_GAP from the rod the film's conductance (h^3) is some 1e6 times
+the contact's and carries nothing, and there a surface squeezed into the corner between
+rod and groove wall creases (the paper's O-ring at 38 MPa with no clearance): with the
+seal's self-contact (:mod:`.self_contact`) the crease closes on itself and only elements
+with a node within FILM_GAP of the rod are watched; without it the crease's faces would
+pass through each other, and the run stops there too, saying so. Where the rod side runs
+up a groove wall, its nodes are pressed
 into the wall by the wall's penalty (about 0.1 um per MPa) to depths that differ from node
 to node, so neighbours there swap their axial order by microns (4 um at 40 MPa, more than
 FOLD of a 0.025 mm element): their element runs along the wall, radially, and is not a fold
@@ -26,6 +31,7 @@ from ..core import SolveError, Term
 
 FOLD = 0.1      # an element inverted by a tenth of its reference length ...
 BACK = 0.5      # ... and pointing backwards along the rod (within 60 degrees of it)
+FILM_GAP = 0.01  # mm from the rod: elements further out are not watched for folds
 
 
 def fold(side, u, back=BACK, skip=None):
@@ -48,14 +54,16 @@ def fold(side, u, back=BACK, skip=None):
 
 
 class RodSideGuard(Term):
-    def __init__(self, side, depth, note=None, walls=None):
+    def __init__(self, side, depth, note=None, walls=None, creases=False):
         """``side``: the :class:`sealts.contact.rod_side.RodSide` (its ``off`` nodes, their
         dofs and the rod radius); ``depth``: how far (mm) a node may enter the rod;
         ``note(u)``: more words for the message (e.g. the rolling angle), or None;
         ``walls(t)``: the groove's side walls (z_a, z_b) (mm): an element both of whose
         nodes are pressed into one of them is no fold, whatever its direction (their
-        order there is the wall penalty's), or None."""
+        order there is the wall penalty's), or None; ``creases``: the seal's surface has its
+        self-contact, which holds a fold away from the rod."""
         self.side, self.depth, self.note, self.walls = side, float(depth), note, walls
+        self.creases = bool(creases)
 
     def accepted(self, t, u):
         self._check_fold(t, u)
@@ -70,18 +78,32 @@ class RodSideGuard(Term):
         a, b = y <= za, y >= zb
         return (a[:-1] & a[1:]) | (b[:-1] & b[1:])
 
+    def _skipped(self, t, u):
+        """Per element: both nodes pressed into one side wall (``_pressed``), or, with the
+        self-contact, no node within FILM_GAP of the rod; None if nothing is skipped."""
+        skip = self._pressed(t, u)
+        if not self.creases:
+            return skip
+        far = self.side.gap(t, u) > FILM_GAP
+        far = far[:-1] & far[1:]
+        return far if skip is None else skip | far
+
     def _check_fold(self, t, u):
         side = self.side
-        k = fold(side, u, skip=self._pressed(t, u))
+        k = fold(side, u, skip=self._skipped(t, u))
         if k < 0:
             return
         y, h = side.y(u), side.gap(t, u) * 1e3
         a, b = side.chain[k], side.chain[k + 1]
+        if min(h[k], h[k + 1]) <= FILM_GAP * 1e3:
+            why = ("the seal's surface turns back along the rod, where the film (a function "
+                   "of the axial position) cannot follow it")
+        else:
+            why = ("the seal's surface creases and its faces would pass through each other: "
+                   "seal.self_contact = \"on\" closes the crease on itself")
         raise SolveError(f"at t = {t:.6g} the rod side folds over between nodes {a} and {b} "
                          f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm, {h[k]:.3g} and "
-                         f"{h[k + 1]:.3g} um from the rod): the seal's surface turns back "
-                         "along the rod and would touch itself, which the model does not "
-                         "include (self-contact)")
+                         f"{h[k + 1]:.3g} um from the rod): {why}")
 
     def _check_off(self, t, u):
         depth = self.side.off_depth(t, u)

@@ -50,7 +50,9 @@ class HoldProblem:
         self.U0[lay.prony_dofs[lay.cells]] = H0
         # the planar O-ring's rolling gauge too (frictionless, as steps 1-2)
         self.gauge_terms = [model.gauge] if model.gauge is not None else []
-        terms = model.local_terms([self.rod, self.groove, self.load] + self.gauge_terms,
+        self.surface = model.surface(lay.udofs)
+        terms = model.local_terms([self.rod, self.groove, self.load] + self.surface
+                                  + self.gauge_terms,
                                   dofs=lay, solid=self.solid)
         terms.insert(1, self.prony)
         terms += model.guards(self.side, self.groove, self.load.pressure) + [
@@ -81,4 +83,4 @@ class HoldProblem:
         """The long-term (hyperelastic) problem's boundary terms at the final pressure (rod,
         groove, the load, the gauge), and that load: a copy of the hold's held at p_to."""
         load = self.load.rebuilt([lambda t: self.p_to] + self.load.pressures[1:])
-        return [self.rod, self.groove, load] + self.gauge_terms, load
+        return [self.rod, self.groove, load] + self.surface + self.gauge_terms, load

@@ -14,6 +14,7 @@ from ..contact.rigid import (GrooveContact, RodContact, node_contact_pressure,
 from ..contact.extrusion_guard import ExtrusionGuard, extrusion
 from ..contact.rod_side_guard import RodSideGuard
 from ..contact.rod_side import RodSide
+from ..contact.self_contact import SelfContact
 from ..mesh.partition import Partition
 from ..solid.stabilisation import ViscousStabilisation
 from ..solid.term import SolidTerm
@@ -21,6 +22,14 @@ from .problem import Problem
 
 NEWTON_ATOL = 1e-9   # a seal's Newton solves converge to this fraction of its force scale
 WALLS_FINAL = 1.0    # rod and groove reach their final radii at this pseudo-time
+
+
+# seal.self_contact = "auto" turns the self-contact on from this sealed or back pressure
+# (MPa): the paper's O-ring (0.025 / 0.2 mm) creases against the atmosphere side's wall
+# at 38 MPa, and pressurised to 30 or 35 MPa its closest boundary nodes within reach stay
+# 2.8 contact distances apart; below, the term's pattern would only cost (its couplings
+# along the boundary put 27 % more fill into steps 1-2's factorisations)
+SELF_CONTACT_FROM = 10.0
 
 
 def ramp(t):
@@ -42,12 +51,14 @@ class SealModel:
 
     ``hold_rolling``: hold the rolling angle with ``gauge`` (:mod:`sealts.solid.rolling`) in
     steps 1-2 (and the hold); by default on a plane-strain section whose boundary is a
-    circle, which nothing else holds from rolling between frictionless walls."""
+    circle, which nothing else holds from rolling between frictionless walls.
+    ``self_contact``: the surface's self-contact (:mod:`sealts.contact.self_contact`) among
+    the boundary terms of every step (``surface``)."""
 
     def __init__(self, mesh, material, rod_radius, groove_radius, groove_walls, axisym=True,
                  law=None, penalty=1e4, stabilisation=1e-3, depth=1.0,
                  corner_radius=0.0, comm=None, hold_rolling=None, clearance=0.0,
-                 edge_radius=0.1, extrusion_limit=0.25, off_hint=""):
+                 edge_radius=0.1, extrusion_limit=0.25, off_hint="", self_contact=False):
         from petsc4py import PETSc
 
         from ..solid.pressure import boundary_loop
@@ -84,6 +95,11 @@ class SealModel:
                                     edge=((rod_radius + clearance, edge_radius)
                                           if clearance > 0.0 else None))
         self.extrusion_limit = extrusion_limit
+        # the surface against itself: a crease's faces (sealts.contact.self_contact)
+        self.self_contact = (SelfContact(X, boundary_loop(mesh.conn)[:, 0], trib, axisym,
+                                         udofs=udofs, penalty=penalty,
+                                         delta=self.groove.delta, depth=depth)
+                             if self_contact else None)
         # lumped nodal volumes as stabilisation weights (mm^3), scaled by c (MPa s / mm^2);
         # summed over the ranks' cells
         mpi = comm.tompi4py()
@@ -147,7 +163,8 @@ class SealModel:
                     "hoop strain only friction holds a round section from rolling)"
                     + self.off_hint)
 
-        return RodSideGuard(side, self.law.contact_gap, note, walls=groove.z_walls)
+        return RodSideGuard(side, self.law.contact_gap, note, walls=groove.z_walls,
+                            creases=self.self_contact is not None)
 
     def guards(self, side=None, groove=None, pressure=None):
         """The post-step guards of a run on this seal: with an extrusion gap the extrusion
@@ -170,8 +187,18 @@ class SealModel:
                        snes_atol=NEWTON_ATOL * self.force_scale, **kw)
 
     def walls(self):
-        """The boundary terms of steps 1-2: rod, groove (and the rolling gauge)."""
-        return [self.rod, self.groove] + ([self.gauge] if self.gauge is not None else [])
+        """The boundary terms of steps 1-2: rod, groove, the surface's own (and the rolling
+        gauge)."""
+        return ([self.rod, self.groove] + self.surface()
+                + ([self.gauge] if self.gauge is not None else []))
+
+    def surface(self, udofs=None):
+        """The seal surface's terms against itself (its self-contact, if on) in the
+        numbering ``udofs`` (nodes, 2; default the model's): every step's boundary terms
+        take them."""
+        if self.self_contact is None:
+            return []
+        return [self.self_contact if udofs is None else self.self_contact.on(udofs)]
 
     def rod_radius(self, t):
         """The rod's radius at pseudo-time t: moving in over [0, WALLS_FINAL] (mm)."""
@@ -296,7 +323,17 @@ def model_from_scene(scene, comm=None, refine=None):
                      corner_radius=gr.corner_radius, comm=comm, clearance=gr.clearance,
                      edge_radius=gr.edge_radius, extrusion_limit=gr.extrusion_limit,
                      off_hint=SHARP_CORNERS if sl.shape == "rectangle"
-                     and sl.corner_radius == 0.0 else "")
+                     and sl.corner_radius == 0.0 else "",
+                     self_contact=self_contact_on(scene))
+
+
+def self_contact_on(scene):
+    """Whether the scene's seal has its self-contact: ``seal.self_contact`` on, or auto and
+    the sealed or back pressure at least SELF_CONTACT_FROM."""
+    mode = scene.seal.self_contact
+    if mode != "auto":
+        return mode == "on"
+    return max(scene.fluid.p_in, scene.fluid.p_out) >= SELF_CONTACT_FROM
 
 
 def _file_mesh(path, cache, r_rod, groove):

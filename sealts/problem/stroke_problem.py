@@ -172,7 +172,7 @@ class StrokeProblem:
         # (indicator, t) of the run's last ODD_EVEN_STEPS accepted states (OddEvenWatch)
         self.odd_even_recent = deque(maxlen=ODD_EVEN_STEPS)
         self.vdofs = np.zeros(0, np.int64)
-        boundary = [self.rod, self.groove]
+        boundary = [self.rod, self.groove] + model.surface(ud)
         if wet:
             film_kw = dict(v=self.motion.v, eta=fl.viscosity, p_in=fl.p_in, p_out=fl.p_out,
                            ff=flow_factors_of(fm), h_floor=fm.h_floor, squeeze=fm.squeeze,

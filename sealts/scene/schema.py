@@ -124,6 +124,9 @@ class Seal:
                                       "part of the rod side (0: sharp)")
     symmetry: str = option("axisymmetric", choices=("axisymmetric", "planar"),
                            doc="axisymmetric ring or plane strain (per mm of depth)")
+    self_contact: str = option("auto", choices=("auto", "on", "off"),
+                               doc="the surface against itself (a crease closing on itself); "
+                                   "auto: on from 10 MPa sealed or back pressure")
 
 
 @dataclass(frozen=True)
