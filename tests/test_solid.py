@@ -67,6 +67,29 @@ def test_inverted_element_is_reported():
             assert not element_forces(u, conn, W, B, 1.0, c01, 0.001, 1.0, tangent)[3]
 
 
+def test_element_kernel_does_not_depend_on_the_threads():
+    """element_forces shares its elements among numba's threads, each block with its own
+    work arrays: one thread and two give the same bits (forces, tangents, energy, the
+    inverted-element flag, Gauss-point state), with and without tangents."""
+    import numba
+    X, conn, _ = rectangle(1.0, 2.0, 0.0, 1.0, 12, 9)
+    W, B, _ = gauss_operators(X, conn, True)
+    u = np.random.default_rng(3).uniform(-0.05, 0.05, 2 * X.shape[0])
+    u[2 * conn[40, 1]] -= 1.0                   # and one element inverted
+    before = numba.get_num_threads()
+    try:
+        for c01, tangent in ((0.0, True), (0.3, False)):
+            out = []
+            for threads in (1, min(2, numba.config.NUMBA_NUM_THREADS)):
+                numba.set_num_threads(threads)
+                out.append(element_forces(u, conn, W, B, 1.0, c01, 0.001, 1.0, tangent))
+            assert not out[0][3] and not out[1][3]
+            for a, b in zip(*out):
+                assert np.array_equal(a, b)
+    finally:
+        numba.set_num_threads(before)
+
+
 def solve_static(term, n, fixed, values, loads=()):
     """Equilibrium under prescribed displacements and loads, both ramped over a pseudo-time
     0..1 by TS (the way mounting is done): a step whose Newton solve fails is retried."""

@@ -143,6 +143,11 @@ class Problem:
         self.snes_tol = (dict(rtol=1e-10, atol=1e-12) if snes_atol is None
                          else dict(rtol=1e-14, atol=snes_atol, stol=1e-14))
         self.comm = comm or PETSc.COMM_WORLD
+        if self.comm.getSize() > 1:
+            # one thread per rank: the ranks already share the cores (the solid's element
+            # kernel spreads its elements over numba's threads in a serial run)
+            import numba
+            numba.set_num_threads(1)
         self.n = int(n)
         self.terms = list(terms)
         self.constraints = constraints
@@ -216,6 +221,8 @@ class Problem:
             cols = np.concatenate([cols, fixed])
         self._rows, self._cols = rows, cols
         self._mine = self._keep[rows]
+        if self._mine.all():     # serial: every entry is this rank's, no copy per Jacobian
+            self._mine = slice(None)
         self.J = PETSc.Mat().create(comm=self.comm)
         m = self.rend - self.rstart
         self.J.setSizes(((m, self.n), (m, self.n)))

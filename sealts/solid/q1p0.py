@@ -106,6 +106,61 @@ def gauss_operators(X, conn, axisym):
 
 
 @numba.njit(cache=True)
+def _element(e, u, conn, W, B, c10, c01, d1, j_th, tangent, r, K, f_all, P_all, p_el,
+             th_el, e_el, bad, ue, b, dJ, HJ, A, M, MB):
+    """Element e of :func:`element_forces` into its rows of the outputs (r ... bad), with
+    the work arrays ue ... MB."""
+    for a in range(4):
+        ue[2 * a] = u[2 * conn[e, a]]
+        ue[2 * a + 1] = u[2 * conn[e, a] + 1]
+    V = 0.0
+    v = 0.0
+    en = 0.0
+    b[:] = 0.0
+    for g in range(4):
+        Bg = B[e, g]
+        f = f_all[e, g]
+        deformation_into(Bg, ue, f)
+        J = det_into(f, dJ[g], HJ[g])
+        if J <= 0.0:
+            bad[e] = True
+            J = 1.0        # finite stand-in: the caller discards this state
+        P = P_all[e, g]
+        psi = isochoric_into(f, J, dJ[g], HJ[g], c10, P, A[g], tangent)
+        if c01 != 0.0:
+            psi += isochoric_i2_add(f, J, dJ[g], HJ[g], c01, P, A[g], tangent)
+        w = W[e, g]
+        en += w * psi
+        _bt_v(Bg, P, r[e], w)
+        _bt_v(Bg, dJ[g], b, w)
+        V += w
+        v += w * J
+    theta = v / V
+    U, dU, d2U = volumetric(theta, d1, j_th)
+    e_el[e] = en + V * U
+    for j in range(8):
+        r[e, j] += dU * b[j]
+    p_el[e] = dU
+    th_el[e] = theta
+    if not tangent:
+        return
+    Ke = K[e]
+    for g in range(4):
+        w = W[e, g]
+        for i in range(5):
+            for k in range(5):
+                M[i, k] = w * (A[g, i, k] + dU * HJ[g, i, k])
+        _bt_a_b(B[e, g], M, Ke, MB)
+    c = d2U / V
+    for j in range(8):
+        for l in range(8):
+            Ke[j, l] += c * b[j] * b[l]
+
+
+CHUNKS = 16     # element_forces' blocks of elements, shared among numba's threads
+
+
+@numba.njit(cache=True, parallel=True)
 def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
     """Internal forces r (ne, 8), tangents K (ne, 8, 8) and energy of all elements.
 
@@ -115,8 +170,11 @@ def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
     U'(theta) and dilatation theta for output and checks. A non-positive J anywhere gives
     ``ok = False`` (inverted element): the caller rejects the Newton step.
     B as :func:`gauss_operators` builds it (its zero pattern is used). Each Gauss point's
-    tangent is summed as B^T (A + U'(theta) H_J) B, one product, and every work array is
-    allocated once per call.
+    tangent is summed as B^T (A + U'(theta) H_J) B, one product. The elements go in
+    CHUNKS blocks to numba's threads (``NUMBA_NUM_THREADS``, ``numba.set_num_threads``;
+    one per rank under mpiexec, which the Problem sets), each block with its own work
+    arrays and each element writing its own rows, so the result does not depend on the
+    number of threads (the energy is summed afterwards in element order).
     """
     ne = conn.shape[0]
     r = np.zeros((ne, 8))
@@ -125,61 +183,23 @@ def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
     P_all = np.empty((ne, 4, 5))
     p_el = np.empty(ne)
     th_el = np.empty(ne)
+    e_el = np.empty(ne)
+    bad = np.zeros(ne, np.bool_)
+    for c in numba.prange(CHUNKS):
+        ue = np.empty(8)
+        b = np.empty(8)
+        dJ = np.empty((4, 5))
+        HJ = np.empty((4, 5, 5))
+        A = np.empty((4, 5, 5))
+        M = np.empty((5, 5))
+        MB = np.empty((5, 8))
+        for e in range(c * ne // CHUNKS, (c + 1) * ne // CHUNKS):
+            _element(e, u, conn, W, B, c10, c01, d1, j_th, tangent, r, K, f_all, P_all,
+                     p_el, th_el, e_el, bad, ue, b, dJ, HJ, A, M, MB)
     energy = 0.0
-    ok = True
-    ue = np.empty(8)
-    b = np.empty(8)
-    dJ = np.empty((4, 5))
-    HJ = np.empty((4, 5, 5))
-    A = np.empty((4, 5, 5))
-    M = np.empty((5, 5))
-    MB = np.empty((5, 8))
     for e in range(ne):
-        for a in range(4):
-            ue[2 * a] = u[2 * conn[e, a]]
-            ue[2 * a + 1] = u[2 * conn[e, a] + 1]
-        V = 0.0
-        v = 0.0
-        b[:] = 0.0
-        for g in range(4):
-            Bg = B[e, g]
-            f = f_all[e, g]
-            deformation_into(Bg, ue, f)
-            J = det_into(f, dJ[g], HJ[g])
-            if J <= 0.0:
-                ok = False
-                J = 1.0        # finite stand-in: the caller discards this state
-            P = P_all[e, g]
-            psi = isochoric_into(f, J, dJ[g], HJ[g], c10, P, A[g], tangent)
-            if c01 != 0.0:
-                psi += isochoric_i2_add(f, J, dJ[g], HJ[g], c01, P, A[g], tangent)
-            w = W[e, g]
-            energy += w * psi
-            _bt_v(Bg, P, r[e], w)
-            _bt_v(Bg, dJ[g], b, w)
-            V += w
-            v += w * J
-        theta = v / V
-        U, dU, d2U = volumetric(theta, d1, j_th)
-        energy += V * U
-        for j in range(8):
-            r[e, j] += dU * b[j]
-        p_el[e] = dU
-        th_el[e] = theta
-        if not tangent:
-            continue
-        Ke = K[e]
-        for g in range(4):
-            w = W[e, g]
-            for i in range(5):
-                for k in range(5):
-                    M[i, k] = w * (A[g, i, k] + dU * HJ[g, i, k])
-            _bt_a_b(B[e, g], M, Ke, MB)
-        c = d2U / V
-        for j in range(8):
-            for l in range(8):
-                Ke[j, l] += c * b[j] * b[l]
-    return r, K, energy, ok, f_all, P_all, p_el, th_el
+        energy += e_el[e]
+    return r, K, energy, not bad.any(), f_all, P_all, p_el, th_el
 
 
 def element_dofs(conn):
