@@ -468,9 +468,20 @@ def write_reference(keep):
     print(f"written: {REFERENCE}, {REF_PROFILE}")
 
 
-def from_run(d):
-    """A reference run's values from its output directory."""
+def from_run(d, grading):
+    """A reference run's values from its output directory, which must hold a finished run
+    of the reference's setting (the paper's mesh without mesh.h_edge at ``grading``,
+    stroke rtol 1e-4): otherwise a one-line exit naming what differs."""
     s = json.loads((d / "summary.json").read_text())
+    mesh = s["provenance"]["scene"]["mesh"]
+    rtol = s["provenance"]["solvers"].get("stroke_", {}).get("ts_rtol")
+    want = {"mesh.h_contact": (mesh["h_contact"], 0.01), "mesh.h_bulk": (mesh["h_bulk"], 0.05),
+            "mesh.h_edge": (mesh.get("h_edge", 0.0), 0.0),
+            "mesh.grading_distance": (mesh["grading_distance"], grading),
+            "stroke rtol": (rtol, 1e-4), "status": (s["status"], "finished")}
+    for key, (got, ref) in want.items():
+        if got != ref:
+            sys.exit(f"--from-run: {d} has {key} = {got!r}, the reference's is {ref!r}")
     st = s["stroke"]
     return {"net": st["leakage_out"], "out": st["outstroke_transport"],
             "inn": st["instroke_transport"], "work": st["friction_work"],
@@ -504,10 +515,10 @@ def main():
     work = Path(a.work)
     if a.reference:
         if a.from_run:
-            runs = [from_run(Path(d)) for d in a.from_run]
-            if len(runs) != len(REF_GRADINGS):
+            if len(a.from_run) != len(REF_GRADINGS):
                 sys.exit(f"--from-run: one output directory per grading distance "
                          f"{', '.join(f'{g:g}' for g in REF_GRADINGS)} mm, in that order")
+            runs = [from_run(Path(d), g) for d, g in zip(a.from_run, REF_GRADINGS)]
         else:
             runs = [run(f"reference, grading {g:g} mm",
                         scene_text((0.01, 0.05), grading=g, h_edge=0.0),
