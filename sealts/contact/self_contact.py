@@ -12,7 +12,7 @@ least d0 = ``THICKNESS`` min(h_i, h_j) apart, h the nodes' reference tributary l
 by the groove walls' softplus penalty (:func:`sealts.contact.rigid.softplus_penalty`,
 the same k and delta) on the distance d = |x_i - x_j|:
 
-    F_ij = p(d0 - d) A_ij e_ij,   e_ij = (x_i - x_j) / d,   p(g) = k delta ln(1 + exp(-g/delta))
+    F_ij = p(d - d0) A_ij e_ij,   e_ij = (x_i - x_j) / d,   p(g) = k delta ln(1 + exp(-g/delta))
 
 on i (and -F_ij on j), A_ij = min(A_i, A_j) the smaller tributary area (length times 2 pi
 R, or the depth). Two nodes of one face stay 2 h apart, of a right-angled corner 1.4 h,
@@ -22,10 +22,11 @@ the other (h apart) is at h / 2 from both, within d0 = 0.6 h. The force is centr
 it is smooth in every direction (no projection onto segments, no facing test) and
 conserves force and moment pair by pair; its 2 x 2 stiffness is
 
-    d(-F_ij)/dx_i = -A (p' e e^T - p / d (I - e e^T)),   p' = dp/dg at g = d0 - d.
+    d(-F_ij)/dx_i = -A (p' e e^T + p / d (I - e e^T)),   p' = dp/dg (< 0) at g = d - d0.
 
-Its cost: the pattern couples boundary nodes within REACH along the loop; a smooth,
-compressed-free surface has no active pair (residual and Jacobian values are zeros).
+Its cost: the pattern couples boundary nodes within REACH along the loop, fill in the
+factorisations (:data:`sealts.problem.seal_model.SELF_CONTACT_FROM`); a surface that is not
+folding has no pair in reach of contact (its residual and Jacobian values are zeros).
 """
 import numpy as np
 
