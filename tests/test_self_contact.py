@@ -6,7 +6,7 @@ self-contact, pressurised with it."""
 import numpy as np
 import pytest
 
-from conftest import mount_and_pressurise, scene
+from conftest import mount_and_pressurise, scene, stroke_of
 from sealts.contact.rigid import tributary_lengths
 from sealts.contact.self_contact import THICKNESS, SelfContact
 from sealts.core import SolveError
@@ -129,3 +129,13 @@ def test_the_40_mpa_crease_is_held_by_the_self_contact():
     d = np.hypot(*(sc.Xi - sc.Xj + u[sc.di] - u[sc.dj]).T)
     assert (d / sc.d0).min() > 0.5
     assert state.model.results(state.t, u)["static_equilibrium"]
+    # the stroke takes the term too: its start (seal and film in equilibrium at t = 0)
+    # keeps the crease closed and held
+    step = stroke_of(state)
+    (term,) = step.surface
+    assert any(t is term or getattr(t, "term", None) is term for t in step.problem.terms)
+    U = step.start()
+    q, F = term.forces(U)
+    assert np.abs(F).max() > 1e-3
+    d = np.hypot(*(term.Xi - term.Xj + U[term.di] - U[term.dj]).T)
+    assert (d / term.d0).min() > 0.5

@@ -172,7 +172,8 @@ class StrokeProblem:
         # (indicator, t) of the run's last ODD_EVEN_STEPS accepted states (OddEvenWatch)
         self.odd_even_recent = deque(maxlen=ODD_EVEN_STEPS)
         self.vdofs = np.zeros(0, np.int64)
-        boundary = [self.rod, self.groove] + model.surface(ud)
+        # the seal surface's own terms (its self-contact, sealts.contact.self_contact)
+        self.surface = model.surface(ud)
         if wet:
             film_kw = dict(v=self.motion.v, eta=fl.viscosity, p_in=fl.p_in, p_out=fl.p_out,
                            ff=flow_factors_of(fm), h_floor=fm.h_floor, squeeze=fm.squeeze,
@@ -190,7 +191,6 @@ class StrokeProblem:
             else:
                 self.film = SealFilmTerm(side, lay.film_dofs, **film_kw)
                 self.leakage = LeakageTerm(self.film, self.vdofs)
-            boundary += [self.film]
         self.friction = self.groove_friction = None
         if slip_state:
             self.friction = SlipStateFriction(self.rod, self.motion.v, lay.slip_dofs,
@@ -277,11 +277,12 @@ class StrokeProblem:
 
     def _terms(self, solid, prony, with_leakage):
         """The problem's terms in its numbering: the guard, this rank's solid (and Prony
-        term), rank 0's boundary terms (rod, groove, film, leakage, pressure, frictions)."""
-        boundary = [t for t in (self.rod, self.groove, self.film,
-                                self.leakage if with_leakage else None, self.friction,
-                                self.groove_friction, self.load,
-                                self.work if with_leakage else None) if t is not None]
+        term), rank 0's boundary terms (rod, groove, the surface's own, film, leakage,
+        frictions, pressure, work)."""
+        boundary = [self.rod, self.groove] + self.surface + [
+            t for t in (self.film, self.leakage if with_leakage else None, self.friction,
+                        self.groove_friction, self.load, self.work if with_leakage else None)
+            if t is not None]
         stab = [self.stab] if with_leakage else []
         # the moving front sets the load's wetting at each t: before the load
         front = [self.front] if with_leakage and self.front is not None else []
