@@ -21,6 +21,7 @@ the residual and consistent tangent are exact:
 Element dofs are ordered (u_r, u_z) per node, nodes counter-clockwise.
 """
 import math
+import os
 
 import numba
 import numpy as np
@@ -159,6 +160,12 @@ def _element(e, u, conn, W, B, c10, c01, d1, j_th, tangent, r, K, f_all, P_all, 
 
 CHUNKS = 16     # element_forces' blocks of elements, shared among numba's threads
 
+# One thread unless NUMBA_NUM_THREADS asks for more: alone on this 2-core machine two threads
+# make the default cycle 6 % faster, but two runs side by side with two threads each took
+# three to eight times as long (the threads wait for each other at every call's barrier)
+if "NUMBA_NUM_THREADS" not in os.environ:
+    numba.set_num_threads(1)
+
 
 @numba.njit(cache=True, parallel=True)
 def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
@@ -171,8 +178,8 @@ def element_forces(u, conn, W, B, c10, c01, d1, j_th, tangent=True):
     ``ok = False`` (inverted element): the caller rejects the Newton step.
     B as :func:`gauss_operators` builds it (its zero pattern is used). Each Gauss point's
     tangent is summed as B^T (A + U'(theta) H_J) B, one product. The elements go in
-    CHUNKS blocks to numba's threads (``NUMBA_NUM_THREADS``, ``numba.set_num_threads``;
-    one per rank under mpiexec, which the Problem sets), each block with its own work
+    CHUNKS blocks to numba's threads (one unless NUMBA_NUM_THREADS is set, above; one per
+    rank under mpiexec, which the Problem sets), each block with its own work
     arrays and each element writing its own rows, so the result does not depend on the
     number of threads (the energy is summed afterwards in element order).
     """
