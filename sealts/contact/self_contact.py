@@ -1,8 +1,8 @@
 """Self-contact of the seal's surface: nearby boundary nodes keep a contact distance apart,
 so that a fold of the surface closes on itself instead of passing through itself.
 
-Squeezed into the corner between rod and groove wall (the paper's O-ring above about 35
-MPa with no clearance), the surface pressed along the wall is compressed along itself to a
+Squeezed into the corner between rod and groove wall (the paper's O-ring at 38 MPa with no
+clearance; not at 35), the surface pressed along the wall is compressed along itself to a
 fifth of its length and folds inwards at the scale of the mesh. Without this term the
 faces of the fold pass through each other.
 
@@ -15,10 +15,13 @@ the same k and delta) on the distance d = |x_i - x_j|:
     F_ij = p(d - d0) A_ij e_ij,   e_ij = (x_i - x_j) / d,   p(g) = k delta ln(1 + exp(-g/delta))
 
 on i (and -F_ij on j), A_ij = min(A_i, A_j) the smaller tributary area (length times 2 pi
-R, or the depth). Two nodes of one face stay 2 h apart, of a right-angled corner 1.4 h,
-so a smooth surface feels nothing (p < 1e-17 k delta at d > d0 + ``CUTOFF`` delta, where
-pairs are skipped). A closing fold's faces stop at d0: a node of one face between two of
-the other (h apart) is at h / 2 from both, within d0 = 0.6 h. The force is central, so
+R, or the depth). Two nodes of an undeformed face lie 2 h apart, of a right-angled corner
+1.4 h, so the undeformed surface feels nothing (p < 1e-17 k delta at d > d0 + ``CUTOFF``
+delta, where pairs are skipped; on micrometre elements pairs of a face lie within the
+cutoff, their force some 1e-9 MPa). A closing fold's faces stop at d0 where its nodes are
+within reach (the one or two pairs nearest its tip; a deeper fold is not held): a node of
+one face between two of the other (h apart) is at h / 2 from both, within d0 = 0.6 h. A
+surface compressed along itself below 0.3 of its length is resisted too. The force is central, so
 it is smooth in every direction (no projection onto segments, no facing test) and
 conserves force and moment pair by pair; its 2 x 2 stiffness is
 
