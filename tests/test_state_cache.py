@@ -40,7 +40,7 @@ def test_key_changes_with_every_input_of_steps_1_2_and_only_with_them(tmp_path,
              sec("asperity", h_mix=8e-4), sec("asperity", p_mix=10.0),
              sec("groove", diameter=59.5), sec("groove", clearance=0.1),
              sec("rod", radius=25.01), sec("seal", d2=5.34), sec("mount", penalty=2e4),
-             sec("mount", dt=0.01)]
+             sec("mount", dt=0.01), sec("seal", self_contact="on")]
     keys = [key(s, {"stroke_ts_rtol": "1e-3"}) for s in other]
     keys += [key(base, {"ts_rtol": "1e-2"}), key(base, {"static_snes_rtol": "1e-12"}),
              key(base, {"transfer_snes_max_it": "60"}),
@@ -48,6 +48,24 @@ def test_key_changes_with_every_input_of_steps_1_2_and_only_with_them(tmp_path,
     monkeypatch.setattr(state_cache, "code_version", lambda: "a changed line of sealts")
     keys.append(key(base, {"stroke_ts_rtol": "1e-3"}))
     assert k0 not in keys and len(set(keys)) == len(keys)
+
+
+def test_a_hold_to_a_high_pressure_has_the_self_contact_and_its_own_state():
+    """seal.self_contact = "auto" reads hold.p_end as it reads p_in: the O-ring's surface
+    creases against the wall from 38 MPa whichever step raises the pressure (stress.md,
+    twenty-second session), and steps 1-2 take the self-contact's term, so a hold to 20 MPa
+    and one to 5 MPa from the same p_in have different states."""
+    from sealts.problem.seal_model import SELF_CONTACT_FROM, self_contact_on
+    from sealts.steps.state_cache import key
+    base = scene("oring_hold")
+    assert base.fluid.p_in < SELF_CONTACT_FROM and base.seal.self_contact == "auto"
+
+    def hold(p):
+        return replace(base, hold=replace(base.hold, p_end=p))
+
+    assert not self_contact_on(hold(5.0)) and self_contact_on(hold(SELF_CONTACT_FROM))
+    assert key(hold(20.0)) != key(hold(5.0))
+    assert key(hold(5.0)) == key(hold(9.0))          # no other hold input reaches steps 1-2
 
 
 def test_steps_with_and_without_the_cache(tmp_path):

@@ -329,11 +329,13 @@ def model_from_scene(scene, comm=None, refine=None):
 
 def self_contact_on(scene):
     """Whether the scene's seal has its self-contact: ``seal.self_contact`` on, or auto and
-    the sealed or back pressure at least SELF_CONTACT_FROM."""
+    the sealed pressure (``fluid.p_in``, or a hold's ``hold.p_end``) or the back pressure at
+    least SELF_CONTACT_FROM. One flag for the whole run: steps 1-2 take it too, so the
+    state cache's key holds it (:func:`sealts.steps.state_cache.inputs`)."""
     mode = scene.seal.self_contact
     if mode != "auto":
         return mode == "on"
-    return max(scene.fluid.p_in, scene.fluid.p_out) >= SELF_CONTACT_FROM
+    return max(scene.fluid.p_in, scene.fluid.p_out, scene.hold.p_end) >= SELF_CONTACT_FROM
 
 
 def _file_mesh(path, cache, r_rod, groove):

@@ -58,11 +58,13 @@ def solver_options(options):
 
 def inputs(scene, options=None):
     """Everything steps 1-2 depend on (module docstring), as a JSON-able dict."""
+    from ..problem.seal_model import self_contact_on
     d = asdict(scene)
     spec = {k: d[k] for k in ("model", "seal", "groove", "material", "mesh", "mount",
                               "asperity")}
     spec["rod_radius"] = scene.rod.radius
     spec["fluid"] = {k: d["fluid"][k] for k in ("p_in", "p_out", "p_crit")}
+    spec["self_contact"] = self_contact_on(scene)    # "auto" reads hold.p_end too
     for section, key in (("groove", "mu"), ("asperity", "mu_s"), ("asperity", "enabled"),
                          ("mesh", "cache")):
         spec[section].pop(key, None)
