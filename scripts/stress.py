@@ -110,14 +110,15 @@ FACTORS = {
     "scene_mesh": [(f"p_in {p:g} MPa{a}, mesh 0.025 / 0.2",
                     {"fluid": {"p_in": float(p)}, "mesh": {"h_contact": 0.025},
                      "stroke": {"v_max": float(v)}})
-                   for p, v, a in ((10, 500, ""), (20, 500, ""), (30, 500, ""), (40, 500, ""),
+                   for p, v, a in ((10, 500, ""), (20, 500, ""), (30, 500, ""), (35, 500, ""),
+                                   (40, 500, ""),
                                    (30, 2000, ", v_max 2000 mm/s"))],
     # the shipped scene's mesh: mesh.h_edge = 0.0015 on 0.025 / 0.2 (the setting within
     # issue 17's accuracy bounds) across the factors
     "edge": [(f"h_edge 0.0015, {name}",
               {**over, "mesh": {"h_contact": 0.025, "h_edge": 0.0015}})
              for name, over in [(f"p_in {p:g} MPa", {"fluid": {"p_in": float(p)}})
-                                for p in (0, 1, 5, 10, 20, 30, 40)]
+                                for p in (0, 1, 5, 10, 20, 30, 35, 40)]
              + [(f"v_max {v:g} mm/s", {"stroke": {"v_max": float(v)}}) for v in (1, 2000)]
              + [("p_in 30 MPa, v_max 2000 mm/s", {"fluid": {"p_in": 30.0},
                                                   "stroke": {"v_max": 2000.0}}),

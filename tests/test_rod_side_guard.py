@@ -27,6 +27,9 @@ def test_a_fold_of_the_rod_side_stops_the_run_and_says_where():
         guard.accepted(1.5, u)
     assert "at t = 1.5 the rod side folds over between nodes 2 and 3" in str(e.value)
     assert "the film (a function of the axial position) cannot follow" in str(e.value)
+    with pytest.raises(SolveError) as e:                # with the walls: which one, how far
+        RodSideGuard(side, depth=7e-4, walls=lambda t: (-1.0, 0.3)).accepted(1.5, u)
+    assert "um from the rod, 0.2 mm from the groove wall at y = 0.3 mm)" in str(e.value)
 
 
 def test_a_crease_up_the_wall_stops_without_self_contact_and_not_with_it():

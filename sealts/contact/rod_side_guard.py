@@ -103,7 +103,17 @@ class RodSideGuard(Term):
                    "seal.self_contact = \"on\" closes the crease on itself")
         raise SolveError(f"at t = {t:.6g} the rod side folds over between nodes {a} and {b} "
                          f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm, {h[k]:.3g} and "
-                         f"{h[k + 1]:.3g} um from the rod): {why}")
+                         f"{h[k + 1]:.3g} um from the rod{self._wall_note(t, y[k])}): {why}")
+
+    def _wall_note(self, t, y):
+        """How far the fold at ``y`` lies from the nearer groove wall (the folds on the rod
+        seen so far lie next to the atmosphere side's wall, where the rod's friction drags
+        the surface out of the corner: README, "Operating limits")."""
+        if self.walls is None:
+            return ""
+        za, zb = self.walls(t)
+        z = za if abs(y - za) <= abs(y - zb) else zb
+        return f", {abs(y - z):.3g} mm from the groove wall at y = {z:g} mm"
 
     def _check_off(self, t, u):
         depth = self.side.off_depth(t, u)

@@ -103,6 +103,14 @@ from ..solid.viscoelastic_solid import ViscoelasticSolid
 from .film_model import flow_factors_of
 from .problem import Problem
 
+# Newton iterations of the stroke's start (one steady solve, nothing behind it to retry
+# smaller): the film replaces step 2's pressure load on the rod side, and at 35 MPa on the
+# shipped mesh the backtracking line search cuts most steps that would invert the
+# micrometre elements at the contact's edges; that start converges, but after more than
+# PETSc's 50 (benchmarks/stress.md). An iteration is one factorisation: the limit costs
+# only a start that would otherwise fail.
+START_MAX_IT = 200
+
 
 class OddEvenWatch(Observer):
     """The film gap's odd-even indicator of each accepted state into its stroke's
@@ -330,6 +338,7 @@ class StrokeProblem:
         start = self.model.problem(n, self._terms(solid, None, with_leakage=False),
                                    constraints=Constraints(loc, U[fixed][mine]),
                                    prefix="stroke_start_", dofs=lay, linesearch="bt")
+        start.max_it = START_MAX_IT
         U = start.solve_steady(U, 0.0)
         if self.load is not None:
             U = self._settle_front(start, U)
