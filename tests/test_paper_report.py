@@ -26,11 +26,11 @@ def report():
 def test_paper_scenes_load(path):
     s = load_scene(path)
     assert s.model == "seal" and s.name == path.stem
-    # the report's default mesh: the shipped cycle's sizes, without its refinement at the
-    # contact's edges (mesh.h_edge; not measured on the paper's other scenes)
+    # the report's default mesh: the shipped cycle's, refined at the contact's edges
+    # (mesh.h_edge, the setting within the work-precision benchmark's bounds)
     default = load_scene(CONFIGS / "oring_stroke.toml").mesh
-    assert (s.mesh.h_contact, s.mesh.h_bulk, s.mesh.h_edge) == (default.h_contact,
-                                                               default.h_bulk, 0.0)
+    assert (s.mesh.h_contact, s.mesh.h_bulk, s.mesh.h_edge, s.mesh.edge_span) == (
+        default.h_contact, default.h_bulk, default.h_edge, default.edge_span)
 
 
 def test_every_run_names_a_scene_and_an_earlier_state(report):
@@ -62,7 +62,7 @@ def test_scene_copy_runs_the_coarse_mesh_from_the_state(report, tmp_path, key):
     path = tmp_path / "scene.toml"
     path.write_text(report.scene_copy(run, report.MESHES["coarse"], tmp_path))
     s = load_scene(path)
-    assert (s.mesh.h_contact, s.mesh.h_bulk) == (0.1, 0.4)
+    assert (s.mesh.h_contact, s.mesh.h_bulk, s.mesh.h_edge) == (0.1, 0.4, 0.0)
     assert s.start.state == (str(state.resolve()) if run.state else "")
     if key == "ihl12_500":
         assert s.rod.velocity == 500.0
@@ -71,9 +71,13 @@ def test_scene_copy_runs_the_coarse_mesh_from_the_state(report, tmp_path, key):
 
 
 def test_report_default_mesh_is_the_shipped_cycle_mesh(report):
-    """The report runs on the mesh whose leakage is mesh-converged, the shipped cycle's."""
+    """The report runs on the mesh whose leakage is mesh-converged, the shipped cycle's,
+    and its scene copies carry it whatever the scene says."""
     m = load_scene(CONFIGS / "oring_stroke.toml").mesh
-    assert report.MESHES["default"] == (m.h_contact, m.h_bulk)
+    assert report.MESHES["default"] == (m.h_contact, m.h_bulk, m.h_edge)
+    run = next(r for r in report.RUNS if r.key == "state_1mpa")
+    text = report.scene_copy(run, report.MESHES["default"], ROOT)
+    assert re.search(r"^h_edge = 0\.0015\b", text, re.M)
 
 
 class RootComm:
