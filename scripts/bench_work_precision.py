@@ -468,20 +468,48 @@ def write_reference(keep):
     print(f"written: {REFERENCE}, {REF_PROFILE}")
 
 
-def from_run(d, grading):
-    """A reference run's values from its output directory, which must hold a finished run
-    of the reference's setting (the paper's mesh without mesh.h_edge at ``grading``,
-    stroke rtol 1e-4): otherwise a one-line exit naming what differs."""
-    s = json.loads((d / "summary.json").read_text())
-    mesh = s["provenance"]["scene"]["mesh"]
+# the scene's sections a reference run shares with the default scene, key by key (all but
+# the mesh, names, paths and outputs; the stroke's rtol and output times are the run's own;
+# a key its summary lacks is an option added since the run, at its default)
+PHYSICS = ("model", "analysis", "gap", "fluid", "rod", "film", "asperity", "seal", "groove",
+           "material", "mount", "viscoelastic", "hold", "stroke")
+
+
+def check_reference_run(s, grading, d="the run"):
+    """Exit with one line naming what differs where the summary ``s`` is not a finished run
+    of the reference's setting: the default scene (configs/oring_stroke.toml) on the paper's
+    mesh without mesh.h_edge at ``grading``, stroke rtol 1e-4."""
+    from dataclasses import asdict
+
+    from sealts.scene import load_scene
+    scene = s["provenance"]["scene"]
+    mesh = scene["mesh"]
     rtol = s["provenance"]["solvers"].get("stroke_", {}).get("ts_rtol")
     want = {"mesh.h_contact": (mesh["h_contact"], 0.01), "mesh.h_bulk": (mesh["h_bulk"], 0.05),
             "mesh.h_edge": (mesh.get("h_edge", 0.0), 0.0),
             "mesh.grading_distance": (mesh["grading_distance"], grading),
             "stroke rtol": (rtol, 1e-4), "status": (s["status"], "finished")}
+    default = json.loads(json.dumps(asdict(load_scene(ROOT / "configs" / "oring_stroke.toml")),
+                                    default=str))
+    for sec in PHYSICS:
+        if not isinstance(default[sec], dict):
+            want[sec] = (scene.get(sec), default[sec])
+            continue
+        for key, ref in default[sec].items():
+            # a key the run's summary lacks is an option added since, at its default
+            if key in scene.get(sec, {}) and not (sec == "stroke"
+                                                  and key in ("rtol", "output_times")):
+                want[f"{sec}.{key}"] = (scene[sec][key], ref)
     for key, (got, ref) in want.items():
         if got != ref:
             sys.exit(f"--from-run: {d} has {key} = {got!r}, the reference's is {ref!r}")
+
+
+def from_run(d, grading):
+    """A reference run's values from its output directory, which must hold a finished run
+    of the reference's setting (:func:`check_reference_run`)."""
+    s = json.loads((d / "summary.json").read_text())
+    check_reference_run(s, grading, d)
     st = s["stroke"]
     return {"net": st["leakage_out"], "out": st["outstroke_transport"],
             "inn": st["instroke_transport"], "work": st["friction_work"],
