@@ -130,6 +130,15 @@ FACTORS = {
                 ("p_in 10 / p_out 5 MPa", {"fluid": {"p_in": 10.0, "p_out": 5.0}}),
                 ("clearance 0.1 mm, p_in 5 MPa", {"groove": {"clearance": 0.1},
                                                   "fluid": {"p_in": 5.0}})]],
+    # the high pressures with the rubber's rate-dependent stiffness (the paper's Table 2, as
+    # configs/paper_fig14_ve.toml): the long-term material's surface buckles under the
+    # rod's friction from 35 MPa (README, "Operating limits")
+    "ve_pressure": [(f"viscoelastic, p_in {p:g} MPa{a}",
+                     {"fluid": {"p_in": float(p)}, "mesh": m,
+                      "viscoelastic": {"prony": "table2", "temperature": 25.0,
+                                       "t_min": 1e-3, "tol": 1e-2}})
+                    for p, m, a in [(p, {}, "") for p in (10, 20, 30, 35, 40)]
+                    + [(40, {"h_contact": 0.025}, ", mesh 0.025 / 0.2")]],
     # the operating map: sealed pressure x extrusion gap (none, the default, and 0.1 mm) x
     # the sine's amplitude
     "grid": [(f"p_in {p:g} MPa, clearance {c:g} mm, v_max {v:g} mm/s",

@@ -32,6 +32,30 @@ def test_a_fold_of_the_rod_side_stops_the_run_and_says_where():
     assert "um from the rod, 0.2 mm from the groove wall at y = 0.3 mm)" in str(e.value)
 
 
+def test_a_fold_on_the_rod_names_its_cause_where_the_stroke_knows_it():
+    """A hyperelastic stroke with the rod's friction gives its rod-side guard the hint that
+    names the buckling (the paper's O-ring at 35-40 MPa, README "Operating limits") and what
+    holds the surface; a viscoelastic one or one without the rod's friction does not."""
+    from conftest import mount_and_pressurise, scene, stroke_of
+    from sealts.problem.stroke_problem import FOLD_HINT
+
+    coarse = dict(mesh={"h_contact": 0.1, "h_bulk": 0.4})
+    state = mount_and_pressurise(scene("oring_stroke", **coarse))
+
+    def hint(**sections):
+        s = scene("oring_stroke", **coarse, **sections)
+        (guard,) = [g for g in stroke_of(state, s).guards if isinstance(g, RodSideGuard)]
+        return guard.fold_hint
+
+    assert hint() == FOLD_HINT and "[viscoelastic] prony" in FOLD_HINT
+    assert hint(viscoelastic={"prony": "table2"}) == ""
+    assert hint(asperity={"mu_s": 0.0}) == ""
+    side, u = chain()
+    u[side.uz[3]] = -0.05 - 0.2 * 0.05
+    with pytest.raises(SolveError, match="cannot follow it; the rod's friction has buckled"):
+        RodSideGuard(side, depth=7e-4, fold_hint=FOLD_HINT).accepted(0.0, u)
+
+
 def test_a_crease_up_the_wall_stops_without_self_contact_and_not_with_it():
     """The chain runs up a wall and turns back by 6 um radially 50-100 um above the rod: a
     crease. Without the surface's self-contact its faces would pass through each other:

@@ -54,16 +54,17 @@ def fold(side, u, back=BACK, skip=None):
 
 
 class RodSideGuard(Term):
-    def __init__(self, side, depth, note=None, walls=None, creases=False):
+    def __init__(self, side, depth, note=None, walls=None, creases=False, fold_hint=""):
         """``side``: the :class:`sealts.contact.rod_side.RodSide` (its ``off`` nodes, their
         dofs and the rod radius); ``depth``: how far (mm) a node may enter the rod;
         ``note(u)``: more words for the message (e.g. the rolling angle), or None;
         ``walls(t)``: the groove's side walls (z_a, z_b) (mm): an element both of whose
         nodes are pressed into one of them is no fold, whatever its direction (their
         order there is the wall penalty's), or None; ``creases``: the seal's surface has its
-        self-contact, which holds a fold away from the rod."""
+        self-contact, which holds a fold away from the rod; ``fold_hint``: more words for
+        the message of a fold on the rod (what causes it in this run and what to try)."""
         self.side, self.depth, self.note, self.walls = side, float(depth), note, walls
-        self.creases = bool(creases)
+        self.creases, self.fold_hint = bool(creases), fold_hint
 
     def accepted(self, t, u):
         self._check_fold(t, u)
@@ -97,7 +98,7 @@ class RodSideGuard(Term):
         a, b = side.chain[k], side.chain[k + 1]
         if min(h[k], h[k + 1]) <= FILM_GAP * 1e3:
             why = ("the seal's surface turns back along the rod, where the film (a function "
-                   "of the axial position) cannot follow it")
+                   "of the axial position) cannot follow it" + self.fold_hint)
         else:
             why = ("the seal's surface creases and its faces would pass through each other: "
                    "seal.self_contact = \"on\" closes the crease on itself")

@@ -144,12 +144,13 @@ class SealModel:
                                          self.axisym, udofs=self.udofs, heating=s.heating)
         return self._full_solid
 
-    def rod_side_guard(self, side=None, groove=None):
+    def rod_side_guard(self, side=None, groove=None, fold_hint=""):
         """The post-step guard of :mod:`sealts.contact.rod_side_guard` for this seal: the
         boundary nodes off the rod side may not pass into the rod by more than the asperity
         law's contact gap (h_mix of Eq. 44). ``side``: another layout's rod side (the
         stroke's, the hold's; default the model's, its rod moving in steps 1-2); ``groove``:
-        the walls the rod side may be pressed into (default the model's)."""
+        the walls the rod side may be pressed into (default the model's); ``fold_hint``: the
+        words a fold on the rod adds (:class:`RodSideGuard`)."""
         side = self.side if side is None else side
         groove = self.groove if groove is None else groove
 
@@ -164,15 +165,15 @@ class SealModel:
                     + self.off_hint)
 
         return RodSideGuard(side, self.law.contact_gap, note, walls=groove.z_walls,
-                            creases=self.self_contact is not None)
+                            creases=self.self_contact is not None, fold_hint=fold_hint)
 
-    def guards(self, side=None, groove=None, pressure=None):
+    def guards(self, side=None, groove=None, pressure=None, fold_hint=""):
         """The post-step guards of a run on this seal: with an extrusion gap the extrusion
         guard (:mod:`sealts.contact.extrusion_guard`) on ``groove`` (default the model's;
         ``pressure(t)`` the sealed pressure its message names), then the rod-side guard
-        (:meth:`rod_side_guard`)."""
+        (:meth:`rod_side_guard`, with ``fold_hint``)."""
         groove = self.groove if groove is None else groove
-        guard = self.rod_side_guard(side, groove)
+        guard = self.rod_side_guard(side, groove, fold_hint)
         if groove.edge is None:
             return [guard]
         return [ExtrusionGuard(groove, self.extrusion_limit, guard.side, pressure), guard]

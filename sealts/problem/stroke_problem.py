@@ -111,6 +111,15 @@ from .problem import Problem
 # only a start that would otherwise fail.
 START_MAX_IT = 200
 
+# A fold on the rod in a stroke with the rod's friction and the long-term (hyperelastic)
+# material: the friction buckles the seal's surface where mu_s p nears the long-term shear
+# modulus, the rubber's softest; at stroke rates the viscoelastic rubber is several times
+# stiffer (README, "Operating limits")
+FOLD_HINT = ("; the rod's friction has buckled the surface of a seal at its long-term "
+             "modulus, the rubber's softest: with its rate-dependent stiffness "
+             "([viscoelastic] prony) or less friction (asperity.mu_s) the surface holds "
+             "(README, \"Operating limits\")")
+
 
 class OddEvenWatch(Observer):
     """The film gap's odd-even indicator of each accepted state into its stroke's
@@ -251,7 +260,8 @@ class StrokeProblem:
                       "displacement": np.setdiff1d(np.arange(self.n), prony)}
         # post-step hooks run in the terms' order: the guards first (on every rank: rod
         # side, extrusion), then the frictions' return mapping
-        self.guards = model.guards(side, self.groove, lambda t: fl.p_in)
+        self.guards = model.guards(side, self.groove, lambda t: fl.p_in,
+                                   FOLD_HINT if rod_friction and prony_size == 0 else "")
         self._output_terms = self._relaxed_from = None
         self.problem = model.problem(
             self.n, self._terms(self.solid, self.prony, with_leakage=True),
