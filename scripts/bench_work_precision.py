@@ -33,7 +33,8 @@ and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
   every other row runs steps 1-2, ``[start] cache = false``);
 * ``before``: BDF 2 with stroke rtol 1e-3 (the defaults until 2026-12-03);
 * ``targets``: ``configs/paper_fig14_ve_sq_ff.toml`` (viscoelastic, squeeze, flow factors;
-  timed, its leakage not compared) and the paper's mesh (0.01 / 0.05 mm, without
+  timed, its leakage not compared; on the cycle's refined mesh, ``mesh.h_edge``, since
+  2026-12-05, 2.5 times the Prony variables of the rows before) and the paper's mesh (0.01 / 0.05 mm, without
   ``mesh.h_edge``) at the defaults;
 * ``plain``: the default again without -log_view (every other row pays the log's own
   time; the 10 s target is judged on this row).

@@ -170,7 +170,7 @@ def scene_copy(run, mesh, out):
     restart state and the run's own edits."""
     text = (ROOT / "configs" / f"{run.scene}.toml").read_text()
     edits = {("mesh", "h_contact"): mesh[0], ("mesh", "h_bulk"): mesh[1],
-             ("mesh", "h_edge"): mesh[2] if len(mesh) > 2 else 0.0,
+             ("mesh", "h_edge"): mesh[2],
              ("mesh", "cache"): str(ROOT / "meshes"), **run.edits}
     if run.state:
         edits[("start", "state")] = str((out / "runs" / run.state / "state.h5").resolve())
@@ -286,6 +286,11 @@ def plt_setup():
 
 def zoom(ax, prof, b, margin=0.35):
     ax.set_xlim(b[0] - margin, b[1] + margin)
+
+
+def mesh_label(m):
+    """'h_contact / h_bulk mm' of a mesh tuple, with its edges' refinement if it has one."""
+    return f"{m[0]:g} / {m[1]:g} mm" + (f", h_edge {m[2]:g}" if len(m) > 2 and m[2] else "")
 
 
 def mesh_of(out):
@@ -435,7 +440,7 @@ class Report:
                     x = get(n, *path, f=f)
                     vals.append("-" if x is None else f"{x:.{nd}f}")
             rows.append([label] + vals)
-        head = ["quantity"] + [f"{m[0]:g} / {m[1]:g} mm" + (" (this report)" if n is A else "")
+        head = ["quantity"] + [mesh_label(m) + (" (this report)" if n is A else "")
                                for m, n, _ in cols]
         where = ", ".join(f"`{rel(d)}`" for _, _, d in cols if d is not None)
         self.add(f"""
@@ -1344,7 +1349,7 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
                          f"{st['steps_accepted']} / {st['steps_rejected']}" if st else "-"])
         sm = s1 or s0 or {}
         edge = (f", refined to {self.mesh[2] * 1e3:g} um at the pressurised contact's edges "
-                "(`mesh.h_edge`)" if len(self.mesh) > 2 and self.mesh[2] > 0 else "")
+                "(`mesh.h_edge`)" if self.mesh[2] > 0 else "")
         mesh = (f"{self.mesh[0]} mm along the rod side, {self.mesh[1]} mm in the bulk{edge} "
                 f"({self.mesh_name}); {sm.get('nodes', '?')} nodes, "
                 f"{sm.get('elements', '?')} quadrilaterals (the 1 MPa state's mesh)")
@@ -1500,7 +1505,8 @@ def main():
         d = out / "runs" / r.key / "done.json"
         if d.exists():
             total += json.loads(d.read_text())["wall_s"]
-    rep = Report(out, name, mesh, walls)
+    # the mesh the runs in OUT ran (--report-only may read runs of another one)
+    rep = Report(out, name, mesh_of(out) or mesh, walls)
     others = a.other if a.other is not None else sorted(
         d for d in (ROOT / "results").glob("paper_report*") if (d / "runs").is_dir())
     rep.write(git_commit(), total, ["scripts/paper_report.py"] + sys.argv[1:],

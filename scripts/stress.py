@@ -22,8 +22,10 @@ the default scene's 0.025 / 0.2 mm sizes) and ten times the paper's; ``friction`
 ``rtol`` 1e-2 and 1e-4; ``velocity`` constant, ramp-hold and an abrupt start-stop-reverse
 table; ``geometry`` planar and the rectangular Mooney-Rivlin ring; ``flow`` Patir-Cheng
 flow factors with Rq 0.02, 0.215 and 2 um; ``mesh`` 0.1 / 0.4 and 0.025 / 0.2;
-``scene_mesh`` 10, 20, 30 and 40 MPa, and 30 MPa at 2000 mm/s, on the shipped scene's
+``scene_mesh`` 10, 20, 30, 35 and 40 MPa, and 30 MPa at 2000 mm/s, on the shipped scene's
 0.025 / 0.2 mm sizes without its edges' refinement;
+``ve_pressure`` 10, 20, 30, 35 and 40 MPa with the paper's Table 2 (viscoelastic), and
+40 MPa on 0.025 / 0.2 mm;
 ``edge`` the shipped scene's mesh (0.025 / 0.2 mm, ``mesh.h_edge = 0.0015``) at 0-40 MPa,
 1 and 2000 mm/s, 30 MPa at 2000 mm/s, the smooth rod, mu 0.5, the abrupt table, back
 pressure and a clearance.

@@ -76,8 +76,8 @@ def test_report_default_mesh_is_the_shipped_cycle_mesh(report):
     m = load_scene(CONFIGS / "oring_stroke.toml").mesh
     assert report.MESHES["default"] == (m.h_contact, m.h_bulk, m.h_edge)
     run = next(r for r in report.RUNS if r.key == "state_1mpa")
-    text = report.scene_copy(run, report.MESHES["default"], ROOT)
-    assert re.search(r"^h_edge = 0\.0015\b", text, re.M)
+    text = report.scene_copy(run, (0.025, 0.2, 0.003), ROOT)
+    assert re.search(r"^h_edge = 0\.003\b", text, re.M)
 
 
 class RootComm:

@@ -107,9 +107,9 @@ class RodSideGuard(Term):
                          f"{h[k + 1]:.3g} um from the rod{self._wall_note(t, y[k])}): {why}")
 
     def _wall_note(self, t, y):
-        """How far the fold at ``y`` lies from the nearer groove wall (the folds on the rod
-        seen so far lie next to the atmosphere side's wall, where the rod's friction drags
-        the surface out of the corner: README, "Operating limits")."""
+        """How far the fold at ``y`` lies from the nearer groove wall (a fold next to the
+        atmosphere side's wall is where the rod's friction drags the surface out of the
+        corner: README, "Operating limits")."""
         if self.walls is None:
             return ""
         za, zb = self.walls(t)

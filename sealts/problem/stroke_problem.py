@@ -111,14 +111,14 @@ from .problem import Problem
 # only a start that would otherwise fail.
 START_MAX_IT = 200
 
-# A fold on the rod in a stroke with the rod's friction and the long-term (hyperelastic)
-# material: the friction buckles the seal's surface where mu_s p nears the long-term shear
-# modulus, the rubber's softest; at stroke rates the viscoelastic rubber is several times
-# stiffer (README, "Operating limits")
-FOLD_HINT = ("; the rod's friction has buckled the surface of a seal at its long-term "
-             "modulus, the rubber's softest: with its rate-dependent stiffness "
-             "([viscoelastic] prony) or less friction (asperity.mu_s) the surface holds "
-             "(README, \"Operating limits\")")
+# What a fold on the rod adds in a stroke with the rod's friction and the long-term
+# (hyperelastic) material: the friction can buckle the seal's surface where mu_s p nears
+# the long-term shear modulus, the rubber's softest; at stroke rates the viscoelastic
+# rubber is several times stiffer (README, "Operating limits")
+FOLD_HINT = ("; where the rod's friction (asperity.mu_s times the contact pressure) nears "
+             "the rubber's long-term shear modulus, its softest, it buckles the seal's "
+             "surface: the rate-dependent stiffness ([viscoelastic] prony) or less friction "
+             "holds it (README, \"Operating limits\")")
 
 
 class OddEvenWatch(Observer):
@@ -261,7 +261,8 @@ class StrokeProblem:
         # post-step hooks run in the terms' order: the guards first (on every rank: rod
         # side, extrusion), then the frictions' return mapping
         self.guards = model.guards(side, self.groove, lambda t: fl.p_in,
-                                   FOLD_HINT if rod_friction and prony_size == 0 else "")
+                                   FOLD_HINT if rod_friction and self.viscoelastic is None
+                                   else "")
         self._output_terms = self._relaxed_from = None
         self.problem = model.problem(
             self.n, self._terms(self.solid, self.prony, with_leakage=True),

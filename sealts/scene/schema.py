@@ -126,7 +126,8 @@ class Seal:
                            doc="axisymmetric ring or plane strain (per mm of depth)")
     self_contact: str = option("auto", choices=("auto", "on", "off"),
                                doc="the surface against itself (a crease closing on itself); "
-                                   "auto: on from 10 MPa sealed (p_in or hold.p_end) or back pressure")
+                                   "auto: on from 10 MPa sealed (p_in or hold.p_end) or back "
+                                   "pressure")
 
 
 @dataclass(frozen=True)
