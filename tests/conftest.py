@@ -13,6 +13,16 @@ CONFIGS = ROOT / "configs"
 sys.path.insert(0, str(Path(__file__).parent))
 
 
+def load_script(name):
+    """scripts/<name>.py as a module (registered in sys.modules, as its dataclasses need)."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(name, ROOT / "scripts" / f"{name}.py")
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod
+    spec.loader.exec_module(mod)
+    return mod
+
+
 def coarsened(sections):
     """The sections with the rule for coarsened meshes: a test that sets a scene's mesh
     sizes (h_contact or h_bulk) and not its h_edge gets ``h_edge = 0``. The shipped O-ring

@@ -1,25 +1,18 @@
 """scripts/bench_work_precision.py --reference --from-run takes only runs of the reference's
 setting: the default scene's physics on the paper's mesh at stroke rtol 1e-4 (a run at
 another sealed pressure or speed would make a wrong reference without a word)."""
-import importlib.util
 import json
-import sys
 from dataclasses import asdict, replace
 
 import pytest
 
-from conftest import CONFIGS, ROOT
+from conftest import CONFIGS, load_script
 from sealts.scene import load_scene
 
 
 @pytest.fixture(scope="module")
 def bench():
-    spec = importlib.util.spec_from_file_location("bench_wp",
-                                                  ROOT / "scripts" / "bench_work_precision.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["bench_wp"] = mod
-    spec.loader.exec_module(mod)
-    return mod
+    return load_script("bench_work_precision")
 
 
 def summary(**sections):

@@ -1,25 +1,18 @@
 """scripts/paper_report.py without running a simulation: its scenes load, the scene copies it
 runs carry the mesh sizes, the restart state and the run's edits, and the report renders
 from run directories with known numbers in them."""
-import importlib.util
 import re
-import sys
 
 import numpy as np
 import pytest
 
-from conftest import CONFIGS, ROOT
+from conftest import CONFIGS, ROOT, load_script
 from sealts.scene import load_scene
 
 
 @pytest.fixture(scope="module")
 def report():
-    spec = importlib.util.spec_from_file_location("paper_report",
-                                                  ROOT / "scripts" / "paper_report.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["paper_report"] = mod
-    spec.loader.exec_module(mod)
-    return mod
+    return load_script("paper_report")
 
 
 @pytest.mark.parametrize("path", sorted(CONFIGS.glob("paper_*.toml")), ids=lambda p: p.stem)

@@ -1,24 +1,20 @@
 """scripts/plot_asperity_laws.py on two made-up stroke runs (no solver): every line named,
 every panel with a unit, each run labelled by its law and contact mesh, and a missing run
 a one-line error with exit 2."""
-import importlib.util
 import json
 import subprocess
 import sys
 
 import numpy as np
 
-from conftest import ROOT
+from conftest import ROOT, load_script
 from test_plots import assert_readable
 
 SCRIPT = ROOT / "scripts" / "plot_asperity_laws.py"
 
 
 def load():
-    spec = importlib.util.spec_from_file_location("plot_asperity_laws", SCRIPT)
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return load_script("plot_asperity_laws")
 
 
 def fake_run(path, law, h_contact, lift):
