@@ -122,19 +122,25 @@ def _pk1_by_h_into(f, L):
 
 
 @numba.njit(cache=True)
-def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift):
+def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, tangent=True):
     """All elements at once. u node-major displacements; H, Hdot (ne, 4, na, 4) active
     internal variables and rates; Hfrozen (ne, 4, 4) = sum_frozen g_i H_i(0); tau (na,) the
-    shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4), K_uu (ne, 8, 8),
-    K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na) (times the identity). B as :func:`.q1p0.gauss_operators` builds it
-    (its zero pattern is used); every work array is allocated once per call."""
+    shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4) and, with
+    ``tangent``, the Jacobian's values in :class:`PronyTerm`'s COO order: K_uu (ne, 8, 8),
+    K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na, 4) (the diagonal, one
+    value per internal variable); without, an empty array (a residual alone skips the
+    blocks). B as :func:`.q1p0.gauss_operators` builds it (its zero pattern is used); every
+    work array is allocated once per call."""
     ne, na = conn.shape[0], g.shape[0]
     ru = np.zeros((ne, 8))
     rH = np.zeros((ne, 4, na, 4))
-    Kuu = np.zeros((ne, 8, 8))
-    KuH = np.zeros((ne, 4, na, 8, 4))
-    KHu = np.zeros((ne, 4, na, 4, 8))
-    KHH = np.zeros((ne, 4, na))
+    nk = ne if tangent else 0
+    o1, o2, o3 = nk * 64, nk * 64 + nk * na * 128, nk * 64 + nk * na * 256
+    jac = np.zeros(o3 + nk * na * 16)
+    Kuu = jac[:o1].reshape((nk, 8, 8))
+    KuH = jac[o1:o2].reshape((nk, 4, na, 8, 4))
+    KHu = jac[o2:o3].reshape((nk, 4, na, 4, 8))
+    KHH = jac[o3:].reshape((nk, 4, na, 4))
     ue, f, Htot, P = np.empty(8), np.empty(5), np.empty(4), np.empty(5)
     M, MB = np.empty((5, 5)), np.empty((5, 8))
     S, dS, L = np.empty(4), np.empty((4, 5)), np.empty((5, 4))
@@ -155,11 +161,18 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift):
                     Htot[c] += g[k] * H[e, q, k, c]
             _pk1_into(f, Htot, P)
             _bt_v(Bq, P, ru[e], -w)
-            _pk1_by_f_into(Htot, -w, M)
-            _bt_a_b(Bq, M, Kuu[e], MB)
+            if tangent:
+                _pk1_by_f_into(Htot, -w, M)
+                _bt_a_b(Bq, M, Kuu[e], MB)
             if na == 0:
                 continue
             iso_pk2_into(f, c10, c01, dJ, HJ, Pi, Ai, S, dS)
+            for k in range(na):
+                gw = g[k] * w
+                for c in range(4):
+                    rH[e, q, k, c] = gw * (tau[k] * Hdot[e, q, k, c] + H[e, q, k, c] - S[c])
+            if not tangent:
+                continue
             _pk1_by_h_into(f, L)
             for j in range(0, 8, 2):       # B^T L and dS B on B's zero pattern
                 for c in range(4):
@@ -169,13 +182,13 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift):
                     dSB[c, j + 1] = dS[c, 2] * Bq[2, j + 1] + dS[c, 3] * Bq[3, j + 1]
             for k in range(na):
                 gw = g[k] * w
+                d = gw * (shift * tau[k] + 1.0)
                 for c in range(4):
-                    rH[e, q, k, c] = gw * (tau[k] * Hdot[e, q, k, c] + H[e, q, k, c] - S[c])
+                    KHH[e, q, k, c] = d
                     for j in range(8):
                         KuH[e, q, k, j, c] = -gw * BtL[j, c]
                         KHu[e, q, k, c, j] = -gw * dSB[c, j]
-                KHH[e, q, k] = gw * (shift * tau[k] + 1.0)
-    return ru, rH, Kuu, KuH, KHu, KHH
+    return ru, rH, jac
 
 
 class PronyTerm(Term):
@@ -207,24 +220,22 @@ class PronyTerm(Term):
                 hd.ravel()]
         self.rows, self.cols = np.concatenate(rows), np.concatenate(cols)
 
-    def _evaluate(self, t, u, udot, shift):
+    def _evaluate(self, t, u, udot, shift, tangent=True):
         s = self.solid
         us = u[s.udofs].ravel()
         H = u[self.hdofs]
         Hd = np.zeros_like(H) if udot is None else udot[self.hdofs]
         A = self.shift(t)
         return prony_kernel(us, s.conn, s.W, s.B, self.mat.c10, self.mat.c01, self.g,
-                            A * self.tau, H, Hd, self.frozen, shift)
+                            A * self.tau, H, Hd, self.frozen, shift, tangent)
 
     def add_residual(self, t, u, udot, f):
-        ru, rH, *_ = self._evaluate(t, u, udot, 0.0)
+        ru, rH, _ = self._evaluate(t, u, udot, 0.0, tangent=False)
         f += np.bincount(self.solid.dofs.ravel(), ru.ravel(), minlength=f.size)
         f[self.hdofs] += rH
 
     def jacobian_values(self, t, u, udot, shift):
-        _, _, Kuu, KuH, KHu, KHH = self._evaluate(t, u, udot, shift)
-        return np.concatenate([Kuu.ravel(), KuH.ravel(), KHu.ravel(),
-                               np.repeat(KHH.ravel(), 4)])
+        return self._evaluate(t, u, udot, shift)[2]
 
     def viscous_cauchy(self, u):
         """The Prony part of the Cauchy stress at every Gauss point, (ne, 4, 4) as
