@@ -94,7 +94,9 @@ def _init_petsc(argv, scene):
 
 # the option prefixes of sealts' solvers (sealts.problem.Problem's ``prefix``)
 SOLVER_PREFIXES = ("", "static_", "transfer_", "hold_", "stroke_", "stroke_film_",
-                   "stroke_start_")
+                   "stroke_start_",
+                   # the viscoelastic hold's and stroke's S (sealts.problem.condensed)
+                   "hold_condensed_", "stroke_condensed_")
 
 
 # sealts' own solver options (read by sealts, not by a PETSc object): name -> meaning

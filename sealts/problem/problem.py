@@ -105,6 +105,10 @@ def _solver_in_force(snes, ts=None):
     out = {"snes_type": snes.getType(), "snes_linesearch_type": snes.getLineSearch().getType(),
            "snes_rtol": rtol, "snes_atol": atol, "snes_stol": stol, "snes_max_it": max_it,
            "ksp_type": ksp.getType(), "pc_type": pc.getType()}
+    if pc.getType() == PETSc.PC.Type.PYTHON:     # the condensation: S's solver
+        inner = pc.getPythonContext().ksp.getPC()
+        out["pc_type"] = f"python (sealts condensation, S by {inner.getType()})"
+        pc = inner
     if pc.getType() in (PETSc.PC.Type.LU, PETSc.PC.Type.CHOLESKY):
         out["pc_factor_mat_solver_type"] = pc.getFactorSolverType()
     if ts is not None:
@@ -162,6 +166,7 @@ class Problem:
         self._step_failures = (None, 0)   # (the step's start time, TS's SNES failures then)
         self._set_defaults = []       # options set by _default_option, dropped after use
         self._callback_error = None   # a term's exception in a callback (_guarded)
+        self._jac_vals = self._jac_state = None   # the last Jacobian's COO values
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
@@ -214,7 +219,9 @@ class Problem:
         if constraints is not None:
             # a constrained row is u_i - g_i(t) = 0: every rank drops its terms' entries in
             # it, the owner adds the identity
-            self._fixed_entries = np.isin(rows, constraints.dofs)
+            # the terms' entries in constrained rows (zeroed), by index: one pass of the
+            # values per Jacobian
+            self._fixed_entries = np.flatnonzero(np.isin(rows, constraints.dofs))
             self._fixed_own = self._own[constraints.dofs]
             fixed = constraints.dofs[self._fixed_own]
             rows = np.concatenate([rows, fixed])
@@ -258,11 +265,12 @@ class Problem:
         return f
 
     def jacobian_values(self, t, u, udot, shift):
-        vals = np.concatenate([np.asarray(term.jacobian_values(t, u, udot, shift), float)
-                               for term in self.terms])
-        if self.constraints is not None:
-            vals[self._fixed_entries] = 0.0
-            vals = np.concatenate([vals, np.ones(int(self._fixed_own.sum()))])
+        parts = [np.asarray(term.jacobian_values(t, u, udot, shift), float)
+                 for term in self.terms]
+        if self.constraints is None:
+            return np.concatenate(parts)
+        vals = np.concatenate(parts + [np.ones(int(self._fixed_own.sum()))])
+        vals[self._fixed_entries] = 0.0
         return vals
 
     def jacobian_dense(self, t, u, udot, shift):
@@ -306,6 +314,8 @@ class Problem:
         ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
         vals = self.jacobian_values(t, u, ud, shift)[self._mine]
         P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
+        # for the condensation's PC (sealts.problem.condensed), which reads them back
+        self._jac_vals, self._jac_state = vals, P.stateGet()
         if J != P:
             J.assemble()
         self.counters.jacobians += 1
@@ -353,7 +363,8 @@ class Problem:
     # ---- solver set-up ---------------------------------------------------------------------
     def _default_linear_solver(self, ksp):
         if "prony" in self.fields:
-            self._default_schur(ksp)
+            if not self._default_condensed(ksp):
+                self._default_schur(ksp)
             return
         ksp.setType(PETSc.KSP.Type.PREONLY)
         pc = ksp.getPC()
@@ -429,6 +440,33 @@ class Problem:
         if failures - at_start < LU_FAILURES:
             return None
         return f"{failures - at_start} failed Newton solves in a row with PETSc's LU"
+
+    def _condensation(self):
+        """The fixed structure of the Prony block's condensation (computed once), or None
+        where it does not apply: in parallel, or a block that is not diagonal."""
+        if not hasattr(self, "_cond"):
+            self._cond = None
+            if self.comm.getSize() == 1 and self.natural is None:
+                from .condensed import Condensation, NotCondensable
+                try:
+                    self._cond = Condensation(self.ltog[self._rows], self.ltog[self._cols],
+                                              self.n, self.fields["prony"])
+                except NotCondensable:
+                    pass
+        return self._cond
+
+    def _default_condensed(self, ksp):
+        """Serial: the Prony internal variables' diagonal block condensed out exactly
+        (sealts.problem.condensed), S factored by LU; False where it does not apply."""
+        cond = self._condensation()
+        if cond is None:
+            return False
+        from .condensed import CondensedPC
+        ksp.setType(PETSc.KSP.Type.PREONLY)
+        pc = ksp.getPC()
+        pc.setType(PETSc.PC.Type.PYTHON)
+        pc.setPythonContext(CondensedPC(self, cond))
+        return True
 
     def _default_schur(self, ksp):
         """Prony internal variables first, displacements second: their own block A00 is

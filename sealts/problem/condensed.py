@@ -1,0 +1,257 @@
+"""Static condensation of a diagonal block: the default serial linear solver of a problem
+whose Jacobian has a diagonal block (the Prony internal variables, paper Eq. 8-9).
+
+With the diagonal block's unknowns q and the rest r, Newton's linear system is
+
+    [ D     A_qr ] [x_q]   [b_q]
+    [ A_rq  A_rr ] [x_r] = [b_r],        D diagonal,
+
+and it is solved exactly by
+
+    S x_r = b_r - A_rq D^-1 b_q,        S = A_rr - A_rq D^-1 A_qr,
+    x_q = D^-1 (b_q - A_qr x_r).
+
+An internal variable couples only to its own element's displacements, so S has the
+pattern of A_rr's element blocks: it is assembled here from the Jacobian's own COO values
+(its pattern, and the slot of every product in it, fixed once), factored by an inner KSP
+(options prefix ``<problem's>condensed_``, LU by default) whose symbolic factorisation
+is kept from one Newton iteration to the next. PCFIELDSPLIT's Schur complement with
+``selfp`` computes the same S, but extracts four sub-matrices and forms the product
+symbolically anew at every set-up.
+
+The PC reads the values the Problem last assembled (``Problem._jac_vals``) when the
+matrix it is handed is that assembly (its PETSc state), else the matrix's own CSR values
+(``-snes_fd`` and the like).
+"""
+import numba
+import numpy as np
+from petsc4py import PETSc
+
+
+# the options prefix of S's solver, after the problem's
+PREFIX = "condensed_"
+
+
+class NotCondensable(ValueError):
+    """The pattern has no diagonal block over the given unknowns."""
+
+
+@numba.njit(cache=True)
+def condense_kernel(vals, qq_e, qq_q, qr_ptr, qr_e, qr_slot, rq_ptr, rq_e, rq_slot, gid,
+                    L, n_groups, rr_e, s_block, dinv, svals):
+    """svals = (A_rr entries, then -(A_rq D^-1 A_qr) per group block of L x L slots);
+    dinv = 1 / diag(D). False if a diagonal entry is zero or not finite."""
+    nq = dinv.size
+    d = np.zeros(nq)
+    for k in range(qq_e.size):
+        d[qq_q[k]] += vals[qq_e[k]]
+    nrr = rr_e.size
+    for k in range(nrr):
+        svals[k] = vals[rr_e[k]]
+    blocks = np.zeros(n_groups * L * L)
+    wv, ws = np.empty(L), np.empty(L, np.int64)
+    for q in range(nq):
+        if d[q] == 0.0 or not np.isfinite(d[q]):
+            return False
+        dinv[q] = 1.0 / d[q]
+        base = gid[q] * L * L
+        b0, nb = qr_ptr[q], qr_ptr[q + 1] - qr_ptr[q]
+        for b in range(nb):       # the q's row of A_qr, once
+            wv[b] = vals[qr_e[b0 + b]] * dinv[q]
+            ws[b] = qr_slot[b0 + b]
+        for a in range(rq_ptr[q], rq_ptr[q + 1]):
+            va = vals[rq_e[a]]
+            row = base + rq_slot[a] * L
+            for b in range(nb):
+                blocks[row + ws[b]] += va * wv[b]
+    for k in range(s_block.size):
+        svals[nrr + k] = -blocks[s_block[k]]
+    return True
+
+
+@numba.njit(cache=True)
+def reduce_rhs(b, qdofs, rdofs, vals, rq_ptr, rq_e, rq_r, dinv, z):
+    """z = b_r - A_rq D^-1 b_q."""
+    for i in range(rdofs.size):
+        z[i] = b[rdofs[i]]
+    for q in range(qdofs.size):
+        t = b[qdofs[q]] * dinv[q]
+        for a in range(rq_ptr[q], rq_ptr[q + 1]):
+            z[rq_r[a]] -= vals[rq_e[a]] * t
+
+
+@numba.njit(cache=True)
+def back_substitute(b, qdofs, rdofs, vals, qr_ptr, qr_e, qr_r, dinv, xr, x):
+    """x_r = xr; x_q = D^-1 (b_q - A_qr x_r)."""
+    for i in range(rdofs.size):
+        x[rdofs[i]] = xr[i]
+    for q in range(qdofs.size):
+        s = b[qdofs[q]]
+        for a in range(qr_ptr[q], qr_ptr[q + 1]):
+            s -= vals[qr_e[a]] * xr[qr_r[a]]
+        x[qdofs[q]] = s * dinv[q]
+
+
+def _by_q(q, e, slot, r, nq):
+    """Entries e (with slots and r indices) sorted by their q, and the CSR pointers; 32-bit
+    indices and 8-bit slots (the kernels read them once per entry per call)."""
+    order = np.argsort(q, kind="stable")
+    ptr = np.zeros(nq + 1, np.int64)
+    np.cumsum(np.bincount(q, minlength=nq), out=ptr[1:])
+    return ptr, e[order].astype(np.int32), slot[order].astype(np.uint8), \
+        r[order].astype(np.int32)
+
+
+class Condensation:
+    """The fixed structure: which COO entries are D, A_qr, A_rq, A_rr, and where each
+    product of A_rq D^-1 A_qr lands in S's COO values."""
+
+    def __init__(self, rows, cols, n, qdofs):
+        rows = np.asarray(rows, np.int64)
+        cols = np.asarray(cols, np.int64)
+        qdofs = np.unique(np.asarray(qdofs, np.int64))
+        isq = np.zeros(n, bool)
+        isq[qdofs] = True
+        rdofs = np.flatnonzero(~isq)
+        qidx = np.full(n, -1, np.int64)
+        qidx[qdofs] = np.arange(qdofs.size)
+        ridx = np.full(n, -1, np.int64)
+        ridx[rdofs] = np.arange(rdofs.size)
+        rq_, cq_ = isq[rows], isq[cols]
+        qq = rq_ & cq_
+        if (rows[qq] != cols[qq]).any():
+            raise NotCondensable("the internal variables' block is not diagonal")
+        if np.unique(rows[qq]).size != qdofs.size:
+            raise NotCondensable("an internal variable without a diagonal entry")
+        self.n, self.qdofs, self.rdofs = n, qdofs.astype(np.int32), rdofs.astype(np.int32)
+        self.qq_e = np.flatnonzero(qq).astype(np.int32)
+        self.qq_q = qidx[rows[qq]].astype(np.int32)
+        qr = np.flatnonzero(rq_ & ~cq_)
+        rq = np.flatnonzero(~rq_ & cq_)
+        self.rr_e = np.flatnonzero(~rq_ & ~cq_).astype(np.int32)
+        nq, nr = qdofs.size, rdofs.size
+        # each q's coupled r, sorted: its row's columns and its column's rows
+        q_qr, r_qr = qidx[rows[qr]], ridx[cols[qr]]
+        q_rq, r_rq = qidx[cols[rq]], ridx[rows[rq]]
+        keys = np.unique(np.concatenate([q_qr * nr + r_qr, q_rq * nr + r_rq]))
+        kq = keys // nr
+        start = np.searchsorted(kq, np.arange(nq + 1))
+        count = np.diff(start)
+        L = int(count.max(initial=1))
+        if L > 255 or n >= 2**31:
+            raise NotCondensable(f"an internal variable coupled to {L} unknowns")
+        pad = np.full((nq, L), -1, np.int64)
+        pad[kq, np.arange(keys.size) - start[kq]] = keys % nr
+        # q with the same coupled set share a block of S (an element's internal variables)
+        groups, gid = np.unique(pad, axis=0, return_inverse=True)
+        self.gid, self.L = gid.ravel().astype(np.int32), L
+        self.n_groups = groups.shape[0]
+        slot_qr = np.searchsorted(keys, q_qr * nr + r_qr) - start[q_qr]
+        slot_rq = np.searchsorted(keys, q_rq * nr + r_rq) - start[q_rq]
+        self.qr_ptr, self.qr_e, self.qr_slot, self.qr_r = _by_q(q_qr, qr, slot_qr, r_qr, nq)
+        self.rq_ptr, self.rq_e, self.rq_slot, self.rq_r = _by_q(q_rq, rq, slot_rq, r_rq, nq)
+        # S's COO: A_rr's entries, then each group's valid L x L slots
+        gi = np.repeat(groups[:, :, None], L, axis=2)
+        gj = np.repeat(groups[:, None, :], L, axis=1)
+        valid = ((gi >= 0) & (gj >= 0)).ravel()
+        self.s_block = np.flatnonzero(valid).astype(np.int32)
+        self.s_rows = np.concatenate([ridx[rows[self.rr_e]], gi.ravel()[valid]])
+        self.s_cols = np.concatenate([ridx[cols[self.rr_e]], gj.ravel()[valid]])
+
+    def values(self, vals, dinv, svals):
+        """S's COO values and 1 / diag(D) from the Jacobian's COO values; False if D has a
+        zero or non-finite entry."""
+        return condense_kernel(vals, self.qq_e, self.qq_q, self.qr_ptr, self.qr_e,
+                               self.qr_slot, self.rq_ptr, self.rq_e, self.rq_slot, self.gid,
+                               self.L, self.n_groups, self.rr_e, self.s_block, dinv, svals)
+
+    def coo_of_csr(self, rows, cols, indptr, indices):
+        """For values read back from an assembled matrix: the CSR position of each COO
+        entry, and a mask of the first of each duplicate (the others carry zero)."""
+        pos = np.empty(rows.size, np.int64)
+        for_row = np.asarray(indptr, np.int64)
+        idx = np.asarray(indices, np.int64)
+        key = rows * self.n + cols
+        order = np.argsort(key, kind="stable")
+        first = np.ones(rows.size, bool)
+        first[order[1:]] = key[order[1:]] != key[order[:-1]]
+        csr_key = np.repeat(np.arange(self.n), np.diff(for_row)) * self.n + idx
+        pos[:] = np.searchsorted(csr_key, key)
+        return pos, first
+
+
+class CondensedPC:
+    """A petsc4py python PC: the exact solve by condensation (module docstring)."""
+
+    def __init__(self, problem, cond):
+        self.problem, self.cond = problem, cond
+        c = cond
+        self.S = PETSc.Mat().create(comm=PETSc.COMM_SELF)
+        self.S.setSizes((c.rdofs.size, c.rdofs.size))
+        self.S.setType(PETSc.Mat.Type.AIJ)
+        self.S.setPreallocationCOO(c.s_rows.astype(PETSc.IntType),
+                                   c.s_cols.astype(PETSc.IntType))
+        self.svals = np.zeros(c.s_rows.size)
+        self.dinv = np.zeros(c.qdofs.size)
+        self.z, self.xr = self.S.createVecs()
+        # S's solver: LU (UMFPACK, which pivots), tuned by -<prefix>condensed_...
+        self.ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
+        self.ksp.setOptionsPrefix((problem.prefix or "") + PREFIX)
+        self.ksp.setType(PETSc.KSP.Type.PREONLY)
+        inner = self.ksp.getPC()
+        inner.setType(PETSc.PC.Type.LU)
+        inner.setFactorSolverType("umfpack")
+        self.ksp.setOperators(self.S)
+        self.vals = None
+        self._csr = None
+
+    def setFromOptions(self, pc):
+        self.ksp.setFromOptions()
+
+    def _values(self, P):
+        p = self.problem
+        if P.handle == p.J.handle and P.stateGet() == p._jac_state:
+            return p._jac_vals
+        indptr, indices, av = P.getValuesCSR()
+        if self._csr is None:
+            self._csr = self.cond.coo_of_csr(p.ltog[p._rows], p.ltog[p._cols],
+                                             indptr, indices)
+        pos, first = self._csr
+        return np.where(first, av[pos], 0.0)
+
+    def setUp(self, pc):
+        _, P = pc.getOperators()
+        self.vals = vals = np.ascontiguousarray(self._values(P), float)
+        if not self.cond.values(vals, self.dinv, self.svals):
+            pc.setFailedReason(PETSc.PC.FailedReason.FACTOR_NUMERIC_ZEROPIVOT)
+            return
+        self.S.setValuesCOO(self.svals, addv=PETSc.InsertMode.INSERT_VALUES)
+        self.ksp.setUp()
+        reason = self.ksp.getPC().getFailedReason()
+        if reason:
+            pc.setFailedReason(reason)
+
+    def apply(self, pc, x, y):
+        c = self.cond
+        b = x.getArray(readonly=True)
+        reduce_rhs(b, c.qdofs, c.rdofs, self.vals, c.rq_ptr, c.rq_e, c.rq_r, self.dinv,
+                   self.z.getArray())
+        self.ksp.solve(self.z, self.xr)
+        if self.ksp.getConvergedReason() < 0:
+            pc.setFailedReason(self.ksp.getPC().getFailedReason()
+                               or PETSc.PC.FailedReason.SUBPC_ERROR)
+        back_substitute(b, c.qdofs, c.rdofs, self.vals, c.qr_ptr, c.qr_e, c.qr_r,
+                        self.dinv, self.xr.getArray(readonly=True), y.getArray())
+
+    def view(self, pc, viewer):
+        c = self.cond
+        viewer.printfASCII(f"  sealts condensation of {c.qdofs.size} internal variables: "
+                           f"S of {c.rdofs.size} unknowns, {self.S.getInfo()['nz_used']:.0f}"
+                           " nonzeros, solved by:\n")
+        self.ksp.view(viewer)
+
+    def destroy(self, pc):
+        self.ksp.destroy()
+        self.S.destroy()
+        self.z.destroy()
+        self.xr.destroy()

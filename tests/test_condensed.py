@@ -1,0 +1,100 @@
+"""The condensation of the Prony block (sealts.problem.condensed): Newton's linear solve by
+S = A_rr - A_rq D^-1 A_qr against a dense solve of the whole system."""
+import numpy as np
+import pytest
+from petsc4py import PETSc
+
+from sealts.core import Constraints
+from sealts.problem import Problem
+from sealts.problem.condensed import Condensation, NotCondensable
+from sealts.solid.term import NeoHooke, SolidTerm
+from sealts.solid.viscoelastic import PronyTerm
+
+
+def prony_problem(prefix=None):
+    """Two distorted axisymmetric Q1 elements, three active Prony terms and a frozen
+    stress, two dofs fixed; a random state (the Jacobian is then unsymmetric and far from
+    the identity)."""
+    X = np.array([[1.0, 0.0], [1.6, 0.1], [2.2, 0.0], [1.1, 0.7], [1.5, 0.6], [2.3, 0.8]])
+    conn = np.array([[0, 1, 4, 3], [1, 2, 5, 4]])
+    nv, ne = X.shape[0], conn.shape[0]
+    rng = np.random.default_rng(3)
+    solid = SolidTerm(X, conn, NeoHooke(0.5, 0.01), True)
+    hdofs = 2 * nv + np.arange(ne * 16 * 3).reshape(ne, -1)
+    prony = PronyTerm(solid, NeoHooke(40.0, 0.01), [0.5, 0.2, 0.1], [1e-3, 0.1, 10.0],
+                      hdofs, frozen=rng.uniform(-0.3, 0.3, (ne, 4, 4)), shift=lambda t: 2.0)
+    n = 2 * nv + hdofs.size
+    problem = Problem(n, [solid, prony], constraints=Constraints([1, 3], 0.0), prefix=prefix,
+                      fields={"prony": hdofs.ravel(), "displacement": np.arange(2 * nv)})
+    u = np.zeros(n)
+    u[:2 * nv] = rng.uniform(-0.05, 0.05, 2 * nv)
+    u[2 * nv:] = rng.uniform(-2.0, 2.0, hdofs.size)
+    return problem, u, rng.uniform(-1.0, 1.0, n), rng.uniform(-1.0, 1.0, n)
+
+
+def solve(problem, u, ud, b, shift=7.0, touch=False):
+    """Newton's linear solve with the problem's default solver at (u, ud, shift); with
+    ``touch`` the matrix changes state after assembly (the PC reads it back)."""
+    snes = problem.make_snes()
+    ksp = snes.getKSP()
+    problem._assemble_jacobian(0.0, problem._owned(u), problem._owned(ud), shift,
+                               problem.J, problem.J)
+    if touch:
+        problem.J.setValue(0, 0, 0.0, addv=PETSc.InsertMode.ADD_VALUES)
+        problem.J.assemble()
+    ksp.setOperators(problem.J, problem.J)
+    B = problem._owned(b)
+    x = B.duplicate()
+    ksp.solve(B, x)
+    return ksp, x.getArray().copy()
+
+
+@pytest.mark.parametrize("touch", [False, True])
+def test_condensed_solve_is_the_exact_solve(touch):
+    """The default serial solver of a problem with a prony field is the condensation, one
+    LU of the displacements' S, and its answer is the dense solve's to round-off (measured
+    1e-14 relative), from the Problem's own values and from the matrix read back."""
+    problem, u, ud, b = prony_problem()
+    ksp, x = solve(problem, u, ud, b, touch=touch)
+    assert ksp.getType() == "preonly" and ksp.getPC().getType() == "python"
+    assert ksp.getConvergedReason() > 0
+    assert (ksp.getPC().getPythonContext()._csr is not None) == touch
+    A = problem.jacobian_dense(0.0, u, ud, 7.0)
+    xd = np.linalg.solve(A, b)
+    assert np.abs(x - xd).max() < 1e-11 * np.abs(xd).max()
+
+
+def test_inner_solver_takes_its_options_from_the_prefix():
+    """The factorisation of S is tuned from the command line: <prefix>condensed_..."""
+    opts = PETSc.Options()
+    opts["cond_condensed_pc_factor_mat_solver_type"] = "petsc"
+    try:
+        problem, u, ud, b = prony_problem(prefix="cond_")
+        ksp, x = solve(problem, u, ud, b)
+        inner = ksp.getPC().getPythonContext().ksp
+        assert inner.getPC().getFactorSolverType() == "petsc"
+        assert inner.getOptionsPrefix() == "cond_condensed_"
+    finally:
+        opts.delValue("cond_condensed_pc_factor_mat_solver_type")
+    xd = np.linalg.solve(problem.jacobian_dense(0.0, u, ud, 7.0), b)
+    assert np.abs(x - xd).max() < 1e-11 * np.abs(xd).max()
+
+
+def test_zero_diagonal_fails_the_solve_instead_of_dividing():
+    """shift = 0 and a zero relaxation time would make D singular; a zero D entry is a
+    failed preconditioner (Newton fails, TS retries), never an inf in the answer."""
+    problem, u, ud, b = prony_problem()
+    cond = problem._condensation()
+    vals = problem.jacobian_values(0.0, u, ud, 7.0)
+    vals[cond.qq_e[cond.qq_q == 5]] = 0.0
+    svals, dinv = np.zeros(cond.s_rows.size), np.zeros(cond.qdofs.size)
+    assert not cond.values(vals, dinv, svals)
+
+
+def test_a_block_that_is_not_diagonal_is_refused():
+    """Condensation needs D diagonal: an off-diagonal entry among the q is refused (the
+    Problem then keeps PCFIELDSPLIT's Schur complement)."""
+    rows, cols = np.array([0, 1, 2, 0, 2, 1]), np.array([0, 1, 2, 2, 0, 2])
+    Condensation(rows[:5], cols[:5], 3, [1])
+    with pytest.raises(NotCondensable):
+        Condensation(rows, cols, 3, [1, 2])
