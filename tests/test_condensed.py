@@ -4,8 +4,9 @@ import numpy as np
 import pytest
 from petsc4py import PETSc
 
-from sealts.core import Constraints
+from sealts.core import Constraints, Term
 from sealts.problem import Problem
+from sealts.problem import problem as problem_module
 from sealts.problem.condensed import Condensation, NotCondensable
 from sealts.solid.term import NeoHooke, SolidTerm
 from sealts.solid.viscoelastic import PronyTerm
@@ -98,3 +99,29 @@ def test_a_block_that_is_not_diagonal_is_refused():
     Condensation(rows[:5], cols[:5], 3, [1])
     with pytest.raises(NotCondensable):
         Condensation(rows, cols, 3, [1, 2])
+
+
+def test_s_by_petscs_lu_falls_back_to_umfpack_on_a_zero_pivot():
+    """S is factored like any Jacobian of its size (PETSc's LU, small here) and gives way
+    to UMFPACK on a zero pivot. S here has zero diagonals: u1 = 2, u0 = -3 (swapped rows),
+    u2 + u3 / 2 - u0 = 0, and the internal variable's u3 - u0 = 0: u = (-3, 2, -1.5, -3)."""
+    class Swapped(Term):
+        rows = np.array([0, 0, 1, 1, 2, 2, 2, 3, 3])
+        cols = np.array([0, 1, 0, 1, 2, 0, 3, 3, 0])
+
+        def add_residual(self, t, u, udot, f):
+            f[0] += u[1] - 2.0
+            f[1] += u[0] + 3.0
+            f[2] += u[2] - u[0] + 0.5 * u[3]
+            f[3] += u[3] - u[0]
+
+        def jacobian_values(self, t, u, udot, shift):
+            return np.array([0.0, 1.0, 1.0, 0.0, 1.0, -1.0, 0.5, 1.0, -1.0])
+
+    problem = Problem(4, [Swapped()], snes_atol=1e-12, fields={"prony": [3]})
+    u = problem.solve_steady(np.zeros(4))
+    assert u == pytest.approx([-3.0, 2.0, -1.5, -3.0], abs=1e-12)
+    assert problem.lu_fallback is not None
+    solver = problem_module.SOLVERS[""]
+    assert solver["pc_type"].startswith("python (sealts condensation")
+    assert solver["pc_factor_mat_solver_type"].startswith("umfpack")

@@ -194,13 +194,14 @@ class CondensedPC:
         self.svals = np.zeros(c.s_rows.size)
         self.dinv = np.zeros(c.qdofs.size)
         self.z, self.xr = self.S.createVecs()
-        # S's solver: LU (UMFPACK, which pivots), tuned by -<prefix>condensed_...
+        # S's solver: the problem's default LU for its size (Problem._default_factor, with
+        # its fall-back to UMFPACK), tuned by -<prefix>condensed_...
         self.ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
         self.ksp.setOptionsPrefix((problem.prefix or "") + PREFIX)
         self.ksp.setType(PETSc.KSP.Type.PREONLY)
         inner = self.ksp.getPC()
         inner.setType(PETSc.PC.Type.LU)
-        inner.setFactorSolverType("umfpack")
+        problem._default_factor(inner, c.rdofs.size, self.S.getInfo()["nz_allocated"])
         self.ksp.setOperators(self.S)
         self.vals = None
         self._csr = None

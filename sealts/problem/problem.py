@@ -370,25 +370,40 @@ class Problem:
         pc = ksp.getPC()
         if self.comm.getSize() == 1:
             pc.setType(PETSc.PC.Type.LU)
-            if (self.n < PETSC_LU_BELOW and self.lu_fallback is None
-                    and self.J.getInfo()["nz_allocated"] < PETSC_LU_DENSITY * self.n):
-                pc.setFactorSolverType("petsc")
-                pc.setFactorOrdering(PETSc.Mat.OrderingType.AMD)
-            else:
-                pc.setFactorSolverType("umfpack")
+            self._default_factor(pc, self.n, self.J.getInfo()["nz_allocated"])
         else:
             pc.setType(PETSc.PC.Type.REDUNDANT)
+
+    def _default_factor(self, pc, n, nonzeros):
+        """The default serial LU of a matrix of n unknowns: PETSc's with AMD ordering where
+        it is small and sparse (PETSC_LU_BELOW, PETSC_LU_DENSITY) and this problem has not
+        fallen back to UMFPACK, else UMFPACK."""
+        if n < PETSC_LU_BELOW and self.lu_fallback is None and nonzeros < PETSC_LU_DENSITY * n:
+            pc.setFactorSolverType("petsc")
+            pc.setFactorOrdering(PETSc.Mat.OrderingType.AMD)
+        else:
+            pc.setFactorSolverType("umfpack")
+
+    def _factor_of(self, ksp):
+        """(the PC that factors, its options prefix, the condensation or None): the KSP's
+        own PC, or the condensation's LU of S (sealts.problem.condensed)."""
+        pc = ksp.getPC()
+        if pc.getType() == PETSc.PC.Type.PYTHON:
+            ctx = pc.getPythonContext()
+            if hasattr(ctx, "ksp") and hasattr(ctx, "S"):
+                return ctx.ksp.getPC(), ctx.ksp.getOptionsPrefix(), ctx
+        return pc, self.prefix, None
 
     def _arm_lu_fallback(self, snes):
         """After setFromOptions: PETSc's LU in force by default (not chosen on the command
         line or in the scene's [petsc] table) may give way to UMFPACK; another factor
         package chosen there orders the matrix itself (_own_ordering)."""
-        pc = snes.getKSP().getPC()
-        chosen = PETSc.Options(self.prefix).hasName("pc_factor_mat_solver_type")
+        pc, prefix, _ = self._factor_of(snes.getKSP())
+        chosen = PETSc.Options(prefix).hasName("pc_factor_mat_solver_type")
         lu = pc.getType() == PETSc.PC.Type.LU
         self._lu_may_fall_back = lu and not chosen and pc.getFactorSolverType() == "petsc"
         if lu and pc.getFactorSolverType() != "petsc":
-            self._own_ordering(pc)
+            self._own_ordering(pc, prefix)
 
     def _solvers_in_force(self, snes, ts=None):
         """Record the solver this problem set up (SOLVERS, for the summary), with the time
@@ -398,13 +413,13 @@ class Problem:
             out["pc_factor_mat_solver_type"] = (
                 f"umfpack (from t = {self.lu_fallback:.6g}: {self.lu_fallback_why})")
 
-    def _own_ordering(self, pc):
+    def _own_ordering(self, pc, prefix):
         """A factor package other than PETSc's orders the matrix itself (PETSc's
         'external'), unless an ordering was chosen: the AMD ordering set for PETSc's LU,
         handed to UMFPACK as a fixed column order, made its factorisations 3.7 times slower
         on the stroke Jacobian of 0.025 / 0.2 mm (3,487 unknowns; 20 against 5.4 ms,
         2026-12-04)."""
-        if not PETSc.Options(self.prefix).hasName("pc_factor_mat_ordering_type"):
+        if not PETSc.Options(prefix).hasName("pc_factor_mat_ordering_type"):
             pc.setFactorOrdering("external")
 
     def _fall_back_to_umfpack(self, snes, t, why=None):
@@ -412,16 +427,18 @@ class Problem:
         LU (it does not pivot), or ``why`` names another reason, switch its factorisation
         to UMFPACK (which pivots) for the rest of this problem's solves; True if it did."""
         ksp = snes.getKSP()
-        pc = ksp.getPC()
         if not self._lu_may_fall_back or (why is None and (
                 ksp.getConvergedReason() != PETSc.KSP.ConvergedReason.DIVERGED_PCSETUP_FAILED
-                or pc.getFailedReason() not in _ZERO_PIVOT)):
+                or ksp.getPC().getFailedReason() not in _ZERO_PIVOT)):
             return False
         if why is not None:
             self.lu_fallback_why = why
+        pc, prefix, condensed = self._factor_of(ksp)
         pc.reset()                    # the factor goes; SNES sets the operators again
         pc.setFactorSolverType("umfpack")
-        self._own_ordering(pc)
+        self._own_ordering(pc, prefix)
+        if condensed is not None:     # ... but S is the condensation's own
+            condensed.ksp.setOperators(condensed.S)
         self._lu_may_fall_back = False
         self.lu_fallback = float(t)
         self._solvers_in_force(snes, getattr(self, "_ts", None))
