@@ -125,3 +125,55 @@ def test_s_by_petscs_lu_falls_back_to_umfpack_on_a_zero_pivot():
     solver = problem_module.SOLVERS[""]
     assert solver["pc_type"].startswith("python (sealts condensation")
     assert solver["pc_factor_mat_solver_type"].startswith("umfpack")
+
+
+def test_jacobian_as_coo_values_multiplies_like_the_matrix():
+    """Where the condensation solves alone, the Jacobian is its COO values (no AIJ
+    assembly); its products, transposed products and diagonal are the dense matrix's."""
+    problem, u, ud, b = prony_problem()
+    snes = problem.make_snes()
+    J = snes.getJacobian()[0]
+    assert J.getType() == "python"
+    problem._assemble_jacobian(0.0, problem._owned(u), problem._owned(ud), 7.0, J, J)
+    A = problem.jacobian_dense(0.0, u, ud, 7.0)
+    X, Y = problem._owned(b), problem.U.duplicate()
+    J.mult(X, Y)
+    assert np.abs(Y.getArray() - A @ b).max() < 1e-13 * np.abs(A @ b).max()
+    J.multTranspose(X, Y)
+    assert np.abs(Y.getArray() - A.T @ b).max() < 1e-13 * np.abs(A.T @ b).max()
+    assert np.array_equal(J.getDiagonal().getArray(), np.diag(A))
+
+
+@pytest.mark.parametrize("option, value", [("ksp_type", "gmres"), ("snes_fd", "")])
+def test_a_krylov_method_or_snes_own_jacobian_gets_the_assembled_matrix(option, value):
+    """With a Krylov method (the operator is applied, not only its condensation) or a
+    Jacobian SNES computes itself, the matrix is PETSc's AIJ."""
+    opts = PETSc.Options("kry_")
+    opts[option] = value
+    try:
+        problem, u, ud, b = prony_problem(prefix="kry_")
+        snes = problem.make_snes()
+        assert snes.getJacobian()[0].getType() in ("seqaij", "mpiaij")
+    finally:
+        opts.delValue(option)
+
+
+def test_newton_with_the_condensation_is_newton_with_lu():
+    """A steady solve of the Prony problem (its frozen stress loads it) from the random
+    state: the condensation on the Jacobian's COO values takes the same Newton iterations
+    to the same answer as PETSc's LU of the assembled matrix (AMD ordering: PETSc's
+    default nested dissection fails on this two-element matrix with a null communicator,
+    with or without sealts' condensation)."""
+    problem, u, _, _ = prony_problem()
+    x = problem.solve_steady(u)
+    opts = PETSc.Options("lu_")
+    opts["pc_type"], opts["pc_factor_mat_ordering_type"] = "lu", "amd"
+    try:
+        lu, u, _, _ = prony_problem(prefix="lu_")
+        x_lu = lu.solve_steady(u)
+    finally:
+        opts.delValue("pc_type")
+        opts.delValue("pc_factor_mat_ordering_type")
+    assert problem.counters.newton == lu.counters.newton
+    assert np.abs(x - x_lu).max() < 1e-12
+    assert np.abs(problem.global_residual(0.0, x)).max() < 1e-12

@@ -20,8 +20,9 @@ is kept from one Newton iteration to the next. PCFIELDSPLIT's Schur complement w
 symbolically anew at every set-up.
 
 The PC reads the values the Problem last assembled (``Problem._jac_vals``) when the
-matrix it is handed is that assembly (its PETSc state), else the matrix's own CSR values
-(``-snes_fd`` and the like).
+matrix it is handed is that assembly (its PETSc state), else the matrix's own CSR values.
+Where it solves Newton's systems alone (KSP preonly), the Jacobian is not assembled into
+an AIJ matrix at all: :class:`JacobianOperator` holds it as those COO values.
 """
 import numba
 import numpy as np
@@ -90,6 +91,22 @@ def back_substitute(b, qdofs, rdofs, vals, qr_ptr, qr_e, qr_r, dinv, xr, x):
         for a in range(qr_ptr[q], qr_ptr[q + 1]):
             s -= vals[qr_e[a]] * xr[qr_r[a]]
         x[qdofs[q]] = s * dinv[q]
+
+
+@numba.njit(cache=True)
+def coo_mult(rows, cols, vals, x, y):
+    """y = A x of the COO entries (duplicates add)."""
+    y[:] = 0.0
+    for k in range(rows.size):
+        y[rows[k]] += vals[k] * x[cols[k]]
+
+
+@numba.njit(cache=True)
+def coo_mult_transpose(rows, cols, vals, x, y):
+    """y = A^T x of the COO entries."""
+    y[:] = 0.0
+    for k in range(rows.size):
+        y[cols[k]] += vals[k] * x[rows[k]]
 
 
 def _by_q(q, e, slot, r, nq):
@@ -211,8 +228,11 @@ class CondensedPC:
 
     def _values(self, P):
         p = self.problem
-        if P.handle == p.J.handle and P.stateGet() == p._jac_state:
+        if P.handle == p._jac_handle and P.stateGet() == p._jac_state:
             return p._jac_vals
+        if P.getType() == PETSc.Mat.Type.PYTHON:
+            raise RuntimeError("the condensation was handed a matrix the Problem did not "
+                               "assemble")
         indptr, indices, av = P.getValuesCSR()
         if self._csr is None:
             self._csr = self.cond.coo_of_csr(p.ltog[p._rows], p.ltog[p._cols],
@@ -256,3 +276,29 @@ class CondensedPC:
         self.S.destroy()
         self.z.destroy()
         self.xr.destroy()
+
+
+class JacobianOperator:
+    """A petsc4py python Mat: the Problem's last Jacobian as its COO values, never
+    assembled into an AIJ matrix. Where the condensation solves Newton's systems it
+    reads those values itself, so the 4.4M-entry MatSetValuesCOO of the refined fig. 14
+    Jacobian per Newton iteration bought nothing; products (a Krylov method or
+    -snes_test_jacobian chosen on the command line) are computed from the values."""
+
+    def __init__(self, problem):
+        self.problem = problem
+        self.rows = problem.ltog[problem._rows].astype(np.int64)
+        self.cols = problem.ltog[problem._cols].astype(np.int64)
+
+    def mult(self, A, x, y):
+        coo_mult(self.rows, self.cols, self.problem._jac_vals, x.getArray(readonly=True),
+                 y.getArray())
+
+    def multTranspose(self, A, x, y):
+        coo_mult_transpose(self.rows, self.cols, self.problem._jac_vals,
+                           x.getArray(readonly=True), y.getArray())
+
+    def getDiagonal(self, A, d):
+        p = self.problem
+        on = self.rows == self.cols
+        d.setArray(np.bincount(self.rows[on], p._jac_vals[on], minlength=p.n))

@@ -88,6 +88,11 @@ OSC_WINDOW = 200
 EVENT_DT_MIN = 1e-9
 
 
+# SNES options under which SNES computes or tests the Jacobian itself, into an AIJ matrix
+_OWN_JACOBIAN = ("snes_fd", "snes_fd_color", "snes_mf", "snes_mf_operator",
+                 "snes_test_jacobian")
+
+
 def _span(t0, t_end):
     """The time scale of a run from t0 to t_end that TS's smallest step and the events'
     bracket are fractions of: its end time (its span from 0), or its span where that is
@@ -166,7 +171,9 @@ class Problem:
         self._step_failures = (None, 0)   # (the step's start time, TS's SNES failures then)
         self._set_defaults = []       # options set by _default_option, dropped after use
         self._callback_error = None   # a term's exception in a callback (_guarded)
-        self._jac_vals = self._jac_state = None   # the last Jacobian's COO values
+        # the last Jacobian's COO values, and the state and handle of its matrix
+        self._jac_vals = self._jac_state = self._jac_handle = None
+        self._jac_op = None           # the Jacobian as COO values alone (_operator)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
@@ -313,9 +320,13 @@ class Problem:
         u = self.local(U).copy()
         ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
         vals = self.jacobian_values(t, u, ud, shift)[self._mine]
-        P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
+        if P.getType() == PETSc.Mat.Type.PYTHON:     # the values are the matrix
+            self._jac_vals = vals
+            P.stateIncrease()
+        else:
+            P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
         # for the condensation's PC (sealts.problem.condensed), which reads them back
-        self._jac_vals, self._jac_state = vals, P.stateGet()
+        self._jac_vals, self._jac_state, self._jac_handle = vals, P.stateGet(), P.handle
         if J != P:
             J.assemble()
         self.counters.jacobians += 1
@@ -485,6 +496,23 @@ class Problem:
         pc.setPythonContext(CondensedPC(self, cond))
         return True
 
+    def _operator(self, ksp):
+        """After setFromOptions: where the condensation alone solves Newton's systems (KSP
+        preonly, the Jacobian computed by this problem), the Jacobian as its COO values
+        (sealts.problem.condensed.JacobianOperator) instead of an AIJ matrix; else None."""
+        pc = ksp.getPC()
+        if (ksp.getType() != PETSc.KSP.Type.PREONLY or pc.getType() != PETSc.PC.Type.PYTHON
+                or not hasattr(pc.getPythonContext(), "cond")
+                or any(PETSc.Options(self.prefix).hasName(name) for name in _OWN_JACOBIAN)):
+            return None
+        if self._jac_op is None:
+            from .condensed import JacobianOperator
+            m = self.rend - self.rstart
+            self._jac_op = PETSc.Mat().createPython(((m, self.n), (m, self.n)),
+                                                    JacobianOperator(self), comm=self.comm)
+            self._jac_op.setUp()
+        return self._jac_op
+
     def _default_schur(self, ksp):
         """Prony internal variables first, displacements second: their own block A00 is
         diagonal, so selfp's A11 - A10 diag(A00)^-1 A01 is the exact Schur complement, LU
@@ -550,6 +578,9 @@ class Problem:
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
         self._set_splits(snes.getKSP())
+        op = self._operator(snes.getKSP())
+        if op is not None:
+            snes.setJacobian(self.snes_jacobian, op)
         self._arm_lu_fallback(snes)
         self._solvers_in_force(snes)
         return snes
@@ -596,6 +627,9 @@ class Problem:
             from .newton_test import UpdateTest
             ts.getSNES().setConvergenceTest(UpdateTest(ts, self.update_test))
         self._set_splits(ts.getSNES().getKSP())
+        op = self._operator(ts.getSNES().getKSP())
+        if op is not None:
+            ts.setIJacobian(self.ijacobian, op)
         self._arm_lu_fallback(ts.getSNES())
         if self._lu_may_fall_back:
             # before each Newton iteration: a step whose factorisation met a zero pivot
