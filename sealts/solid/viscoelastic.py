@@ -122,21 +122,22 @@ def _pk1_by_h_into(f, L):
 
 
 @numba.njit(cache=True)
-def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, tangent=True):
+def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac):
     """All elements at once. u node-major displacements; H, Hdot (ne, 4, na, 4) active
     internal variables and rates; Hfrozen (ne, 4, 4) = sum_frozen g_i H_i(0); tau (na,) the
-    shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4) and, with
-    ``tangent``, the Jacobian's values in :class:`PronyTerm`'s COO order: K_uu (ne, 8, 8),
-    K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na, 4) (the diagonal, one
-    value per internal variable); without, an empty array (a residual alone skips the
-    blocks). B as :func:`.q1p0.gauss_operators` builds it (its zero pattern is used); every
+    shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4); a non-empty ``jac``
+    is overwritten with the Jacobian's values in :class:`PronyTerm`'s COO order: K_uu (ne,
+    8, 8), K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na, 4) (the
+    diagonal, one value per internal variable); an empty one skips the blocks (a residual
+    alone). B as :func:`.q1p0.gauss_operators` builds it (its zero pattern is used); every
     work array is allocated once per call."""
     ne, na = conn.shape[0], g.shape[0]
     ru = np.zeros((ne, 8))
     rH = np.zeros((ne, 4, na, 4))
+    tangent = jac.size > 0
     nk = ne if tangent else 0
     o1, o2, o3 = nk * 64, nk * 64 + nk * na * 128, nk * 64 + nk * na * 256
-    jac = np.zeros(o3 + nk * na * 16)
+    jac[:o1] = 0.0                 # K_uu is summed over the Gauss points; the rest is set
     Kuu = jac[:o1].reshape((nk, 8, 8))
     KuH = jac[o1:o2].reshape((nk, 4, na, 8, 4))
     KHu = jac[o2:o3].reshape((nk, 4, na, 4, 8))
@@ -188,7 +189,7 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, tange
                     for j in range(8):
                         KuH[e, q, k, j, c] = -gw * BtL[j, c]
                         KHu[e, q, k, c, j] = -gw * dSB[c, j]
-    return ru, rH, jac
+    return ru, rH
 
 
 class PronyTerm(Term):
@@ -219,23 +220,29 @@ class PronyTerm(Term):
                 np.broadcast_to(ed[:, None, None, None, :], (ne, 4, na, 4, 8)).ravel(),
                 hd.ravel()]
         self.rows, self.cols = np.concatenate(rows), np.concatenate(cols)
+        self._jac = None
 
-    def _evaluate(self, t, u, udot, shift, tangent=True):
+    def _evaluate(self, t, u, udot, shift, jac):
         s = self.solid
         us = u[s.udofs].ravel()
         H = u[self.hdofs]
         Hd = np.zeros_like(H) if udot is None else udot[self.hdofs]
         A = self.shift(t)
         return prony_kernel(us, s.conn, s.W, s.B, self.mat.c10, self.mat.c01, self.g,
-                            A * self.tau, H, Hd, self.frozen, shift, tangent)
+                            A * self.tau, H, Hd, self.frozen, shift, jac)
 
     def add_residual(self, t, u, udot, f):
-        ru, rH, _ = self._evaluate(t, u, udot, 0.0, tangent=False)
+        ru, rH = self._evaluate(t, u, udot, 0.0, np.empty(0))
         f += np.bincount(self.solid.dofs.ravel(), ru.ravel(), minlength=f.size)
         f[self.hdofs] += rH
 
     def jacobian_values(self, t, u, udot, shift):
-        return self._evaluate(t, u, udot, shift)[2]
+        # one buffer, overwritten by every call (the Problem copies the values out): a
+        # fresh array of this size comes from the OS and is paid for again in page faults
+        if self._jac is None:
+            self._jac = np.empty(self.rows.size)
+        self._evaluate(t, u, udot, shift, self._jac)
+        return self._jac
 
     def viscous_cauchy(self, u):
         """The Prony part of the Cauchy stress at every Gauss point, (ne, 4, 4) as
