@@ -177,3 +177,18 @@ def test_newton_with_the_condensation_is_newton_with_lu():
     assert problem.counters.newton == lu.counters.newton
     assert np.abs(x - x_lu).max() < 1e-12
     assert np.abs(problem.global_residual(0.0, x)).max() < 1e-12
+
+
+def test_jacobian_values_held_by_a_caller_are_never_overwritten():
+    """The Problem reuses the arrays of its Jacobian's values, but only those nothing
+    else refers to: the values a caller (the condensation's PC set up from them) still
+    holds stay as they were through later Jacobians, and a released array is reused."""
+    problem, u, ud, _ = prony_problem()
+    held = problem.jacobian_values(0.0, u, ud, 7.0)
+    kept = held.copy()
+    later = problem.jacobian_values(0.0, u, ud, 70.0)
+    assert np.array_equal(held, kept) and not np.array_equal(later, kept)
+    n = len(problem._buffers)
+    del later
+    problem.jacobian_values(0.0, u, ud, 700.0)
+    assert len(problem._buffers) == n and np.array_equal(held, kept)

@@ -38,6 +38,7 @@ the post-step hooks, the observers and ``gather`` get) are in serial order on ev
 written by its owner only; every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
 (the default parallel preconditioner is ``redundant`` LU).
 """
+import sys
 from collections import deque
 from dataclasses import asdict
 
@@ -174,6 +175,7 @@ class Problem:
         # the last Jacobian's COO values, and the state and handle of its matrix
         self._jac_vals = self._jac_state = self._jac_handle = None
         self._jac_op = None           # the Jacobian as COO values alone (_operator)
+        self._buffers = []            # for the Jacobian's values (_free_buffer)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
@@ -272,13 +274,28 @@ class Problem:
         return f
 
     def jacobian_values(self, t, u, udot, shift):
+        """The COO values of the Jacobian, in an array that is the caller's until it lets
+        go of it (_free_buffer)."""
         parts = [np.asarray(term.jacobian_values(t, u, udot, shift), float)
                  for term in self.terms]
-        if self.constraints is None:
-            return np.concatenate(parts)
-        vals = np.concatenate(parts + [np.ones(int(self._fixed_own.sum()))])
-        vals[self._fixed_entries] = 0.0
+        if self.constraints is not None:
+            parts.append(np.ones(int(self._fixed_own.sum())))
+        vals = np.concatenate(parts, out=self._free_buffer())
+        if self.constraints is not None:
+            vals[self._fixed_entries] = 0.0
         return vals
+
+    def _free_buffer(self):
+        """An array for the Jacobian's values that nothing outside this problem's pool
+        refers to (the condensation's PC keeps the values it was set up from, the Problem
+        the last ones, _jac_vals): reused, since an array of tens of MB is fresh memory
+        from the OS at every call otherwise, paid for in page faults (the refined fig. 14
+        mesh's Prony Jacobian)."""
+        for buf in self._buffers:
+            if sys.getrefcount(buf) <= 3:    # the pool, this loop, getrefcount's argument
+                return buf
+        self._buffers.append(np.empty(self._rows.size))
+        return self._buffers[-1]
 
     def jacobian_dense(self, t, u, udot, shift):
         """Assembled Jacobian as a dense array (serial tests and diagnostics only)."""
