@@ -82,6 +82,8 @@ class Term:
         pass
 
     def jacobian_values(self, t, u, udot, shift):
+        """The values of dF/dU + shift dF/dU' on the term's pattern (rows, cols). The array
+        may be the term's own buffer, overwritten by its next call: the caller copies."""
         return np.zeros(0)
 
     def accepted(self, t, u):

@@ -45,7 +45,7 @@ def test_hold_creeps_to_the_long_term_state(tmp_path):
     """CLI: 1 -> 5 MPa, hold 1000 s (>> tau = 1 s). The end state is the long-term static
     solution (rod force within 1e-4: the TS tolerance is 1e-4; displacements within 1e-6 mm;
     measured 4e-11 and 2e-13 mm, with the front settled alike); the linear solve is the
-    exact Schur complement (one Krylov iteration per Newton step); the seal creeps after the
+    exact condensation of the Prony block (one linear iteration per Newton step); the seal creeps after the
     step; steps grow by decades; outputs are written."""
     cfg = tmp_path / "hold.toml"
     text = config_text("oring_hold", mesh=SMALL["mesh"], viscoelastic=SMALL["viscoelastic"],

@@ -24,6 +24,8 @@ matrix it is handed is that assembly (its PETSc state), else the matrix's own CS
 Where it solves Newton's systems alone (KSP preonly), the Jacobian is not assembled into
 an AIJ matrix at all: :class:`JacobianOperator` holds it as those COO values.
 """
+import weakref
+
 import numba
 import numpy as np
 from petsc4py import PETSc
@@ -50,7 +52,10 @@ def condense_kernel(vals, qq_e, qq_q, qr_ptr, qr_e, qr_slot, rq_ptr, rq_e, rq_sl
     for k in range(nrr):
         svals[k] = vals[rr_e[k]]
     blocks = np.zeros(n_groups * L * L)
-    wv, ws = np.empty(L), np.empty(L, np.int64)
+    most = 0                       # a q's entries of A_qr, duplicates included
+    for q in range(nq):
+        most = max(most, qr_ptr[q + 1] - qr_ptr[q])
+    wv, ws = np.empty(most), np.empty(most, np.int64)
     for q in range(nq):
         if d[q] == 0.0 or not np.isfinite(d[q]):
             return False
@@ -101,14 +106,6 @@ def coo_mult(rows, cols, vals, x, y):
         y[rows[k]] += vals[k] * x[cols[k]]
 
 
-@numba.njit(cache=True)
-def coo_mult_transpose(rows, cols, vals, x, y):
-    """y = A^T x of the COO entries."""
-    y[:] = 0.0
-    for k in range(rows.size):
-        y[cols[k]] += vals[k] * x[rows[k]]
-
-
 def _by_q(q, e, slot, r, nq):
     """Entries e (with slots and r indices) sorted by their q, and the CSR pointers; 32-bit
     indices and 8-bit slots (the kernels read them once per entry per call)."""
@@ -155,8 +152,10 @@ class Condensation:
         start = np.searchsorted(kq, np.arange(nq + 1))
         count = np.diff(start)
         L = int(count.max(initial=1))
-        if L > 255 or n >= 2**31:
+        if L > 255:
             raise NotCondensable(f"an internal variable coupled to {L} unknowns")
+        if max(rows.size, L * L * nq) >= 2**31:
+            raise NotCondensable("too many Jacobian entries for 32-bit indices")
         pad = np.full((nq, L), -1, np.int64)
         pad[kq, np.arange(keys.size) - start[kq]] = keys % nr
         # q with the same coupled set share a block of S (an element's internal variables)
@@ -182,26 +181,30 @@ class Condensation:
                                self.qr_slot, self.rq_ptr, self.rq_e, self.rq_slot, self.gid,
                                self.L, self.n_groups, self.rr_e, self.s_block, dinv, svals)
 
-    def coo_of_csr(self, rows, cols, indptr, indices):
-        """For values read back from an assembled matrix: the CSR position of each COO
-        entry, and a mask of the first of each duplicate (the others carry zero)."""
-        pos = np.empty(rows.size, np.int64)
-        for_row = np.asarray(indptr, np.int64)
-        idx = np.asarray(indices, np.int64)
+    def from_csr(self, rows, cols, indptr, indices, values):
+        """COO values read back from an assembled matrix's CSR arrays: each entry's value
+        at its first occurrence, zero at its duplicates."""
         key = rows * self.n + cols
         order = np.argsort(key, kind="stable")
         first = np.ones(rows.size, bool)
         first[order[1:]] = key[order[1:]] != key[order[:-1]]
-        csr_key = np.repeat(np.arange(self.n), np.diff(for_row)) * self.n + idx
-        pos[:] = np.searchsorted(csr_key, key)
-        return pos, first
+        indptr = np.asarray(indptr, np.int64)
+        csr_key = (np.repeat(np.arange(self.n), np.diff(indptr)) * self.n
+                   + np.asarray(indices, np.int64))
+        pos = np.minimum(np.searchsorted(csr_key, key), csr_key.size - 1)
+        if csr_key.size != np.count_nonzero(first) or (csr_key[pos] != key).any():
+            raise RuntimeError("the matrix handed to the condensation has another pattern "
+                               "than the Problem's Jacobian")
+        return np.where(first, np.asarray(values)[pos], 0.0)
 
 
 class CondensedPC:
     """A petsc4py python PC: the exact solve by condensation (module docstring)."""
 
     def __init__(self, problem, cond):
-        self.problem, self.cond = problem, cond
+        # weakly: the PC lives in PETSc's objects, which the garbage collector cannot see
+        # through, and would keep the Problem alive
+        self.problem, self.cond = weakref.proxy(problem), cond
         c = cond
         self.S = PETSc.Mat().create(comm=PETSc.COMM_SELF)
         self.S.setSizes((c.rdofs.size, c.rdofs.size))
@@ -221,7 +224,7 @@ class CondensedPC:
         problem._default_factor(inner, c.rdofs.size, self.S.getInfo()["nz_allocated"])
         self.ksp.setOperators(self.S)
         self.vals = None
-        self._csr = None
+        self.read_back = False        # values read back from an assembled matrix
 
     def setFromOptions(self, pc):
         self.ksp.setFromOptions()
@@ -233,20 +236,23 @@ class CondensedPC:
         if P.getType() == PETSc.Mat.Type.PYTHON:
             raise RuntimeError("the condensation was handed a matrix the Problem did not "
                                "assemble")
-        indptr, indices, av = P.getValuesCSR()
-        if self._csr is None:
-            self._csr = self.cond.coo_of_csr(p.ltog[p._rows], p.ltog[p._cols],
-                                             indptr, indices)
-        pos, first = self._csr
-        return np.where(first, av[pos], 0.0)
+        self.read_back = True
+        return self.cond.from_csr(p.ltog[p._rows], p.ltog[p._cols], *P.getValuesCSR())
 
     def setUp(self, pc):
+        # a python PC's failure stays until it is cleared (PETSc's own PCs clear theirs at
+        # set-up): after one failed Newton solve every later one would fail too
+        pc.setFailedReason(PETSc.PC.FailedReason.NOERROR)
         _, P = pc.getOperators()
         self.vals = vals = np.ascontiguousarray(self._values(P), float)
         if not self.cond.values(vals, self.dinv, self.svals):
-            pc.setFailedReason(PETSc.PC.FailedReason.FACTOR_NUMERIC_ZEROPIVOT)
+            pc.setFailedReason(PETSc.PC.FailedReason.SETUP_ERROR)    # D not invertible
             return
         self.S.setValuesCOO(self.svals, addv=PETSc.InsertMode.INSERT_VALUES)
+        # S is factored here (its symbolic factorisation kept: the same pattern), so that
+        # the failure read below is this factorisation's; without setOperators the KSP
+        # counts itself set up and refactors only inside the next solve
+        self.ksp.setOperators(self.S)
         self.ksp.setUp()
         reason = self.ksp.getPC().getFailedReason()
         if reason:
@@ -280,13 +286,11 @@ class CondensedPC:
 
 class JacobianOperator:
     """A petsc4py python Mat: the Problem's last Jacobian as its COO values, never
-    assembled into an AIJ matrix. Where the condensation solves Newton's systems it
-    reads those values itself, so the 4.4M-entry MatSetValuesCOO of the refined fig. 14
-    Jacobian per Newton iteration bought nothing; products (a Krylov method or
-    -snes_test_jacobian chosen on the command line) are computed from the values."""
+    assembled into an AIJ matrix, where the condensation alone solves Newton's systems
+    (it reads the values itself); its product serves a line search that asks for one."""
 
     def __init__(self, problem):
-        self.problem = problem
+        self.problem = weakref.proxy(problem)
         self.rows = problem.ltog[problem._rows].astype(np.int64)
         self.cols = problem.ltog[problem._cols].astype(np.int64)
 
@@ -294,11 +298,59 @@ class JacobianOperator:
         coo_mult(self.rows, self.cols, self.problem._jac_vals, x.getArray(readonly=True),
                  y.getArray())
 
-    def multTranspose(self, A, x, y):
-        coo_mult_transpose(self.rows, self.cols, self.problem._jac_vals,
-                           x.getArray(readonly=True), y.getArray())
 
-    def getDiagonal(self, A, d):
-        p = self.problem
-        on = self.rows == self.cols
-        d.setArray(np.bincount(self.rows[on], p._jac_vals[on], minlength=p.n))
+# SNES options under which SNES computes or tests the Jacobian itself, into an AIJ matrix
+OWN_JACOBIAN = ("snes_fd", "snes_fd_color", "snes_mf", "snes_mf_operator",
+                "snes_test_jacobian")
+
+
+def condensation(problem):
+    """The fixed structure of a problem's Prony block condensation (computed once), or
+    None where it does not apply: in parallel, or a block that is not diagonal."""
+    if problem._cond is False:
+        problem._cond = None
+        if problem.comm.getSize() == 1 and problem.natural is None:
+            try:
+                problem._cond = Condensation(problem.ltog[problem._rows],
+                                             problem.ltog[problem._cols], problem.n,
+                                             problem.fields["prony"])
+            except NotCondensable:
+                pass
+    return problem._cond
+
+
+def default_solver(problem, ksp):
+    """Serial: the problem's Prony internal variables condensed out exactly, S factored by
+    LU (KSP preonly, the condensation as a python PC); False where it does not apply."""
+    cond = condensation(problem)
+    if cond is None:
+        return False
+    ksp.setType(PETSc.KSP.Type.PREONLY)
+    pc = ksp.getPC()
+    pc.setType(PETSc.PC.Type.PYTHON)
+    pc.setPythonContext(CondensedPC(problem, cond))
+    return True
+
+
+def condensed_pc(ksp):
+    """The KSP's condensation (a CondensedPC), or None."""
+    pc = ksp.getPC()
+    if pc.getType() != PETSc.PC.Type.PYTHON:
+        return None
+    ctx = pc.getPythonContext()
+    return ctx if isinstance(ctx, CondensedPC) else None
+
+
+def operator(problem, ksp):
+    """After setFromOptions: where the condensation alone solves Newton's systems (KSP
+    preonly, the Jacobian computed by the problem), the Jacobian as its COO values (one
+    JacobianOperator per problem) instead of the AIJ matrix; else None."""
+    if (ksp.getType() != PETSc.KSP.Type.PREONLY or condensed_pc(ksp) is None
+            or any(PETSc.Options(problem.prefix).hasName(n) for n in OWN_JACOBIAN)):
+        return None
+    if problem._jac_op is None:
+        m = problem.rend - problem.rstart
+        problem._jac_op = PETSc.Mat().createPython(
+            ((m, problem.n), (m, problem.n)), JacobianOperator(problem), comm=problem.comm)
+        problem._jac_op.setUp()
+    return problem._jac_op

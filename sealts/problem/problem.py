@@ -12,11 +12,13 @@ and a steady scene solves F(t, U, 0) = 0 with SNES. Each physics term supplies
 * ``jacobian_values(t, u, udot, shift)``: the values for its pattern (duplicates add up).
 
 The Problem concatenates the patterns once (``setPreallocationCOO``) and, per Newton step,
-concatenates the values (``setValuesCOO``). Terms never see PETSc objects, so adding a term
-touches no other. Dirichlet constraints (``Constraints``: dofs and their values at time t)
-replace whole rows after the terms are summed, u_i - g_i(t) = 0, so terms need not know
-about them. ``setFromOptions()`` is called last, so the command line wins over the
-defaults set here and over a scene's ``[petsc]`` table.
+concatenates the values (``setValuesCOO``; where the Prony block's condensation solves
+alone, :mod:`.condensed` reads the values themselves and no matrix is assembled). Terms
+never see PETSc objects, so adding a term touches no other. Dirichlet constraints
+(``Constraints``: dofs and their values at time t) replace whole rows after the terms are
+summed, u_i - g_i(t) = 0, so terms need not know about them. ``setFromOptions()`` is
+called last, so the command line wins over the defaults set here and over a scene's
+``[petsc]`` table.
 
 Terms work on a rank's *local* arrays: ``add_residual`` gets the local u, udot and f, and
 ``rows, cols`` are local dof numbers. Two modes:
@@ -47,6 +49,7 @@ from petsc4py import PETSc
 
 from .. import interrupt
 from ..core import Counters, SolveError, StepInfo, StepTooSmall
+from . import condensed
 
 
 # the solvers in force, by options prefix, as set up last in this process (for the summary)
@@ -89,9 +92,15 @@ OSC_WINDOW = 200
 EVENT_DT_MIN = 1e-9
 
 
-# SNES options under which SNES computes or tests the Jacobian itself, into an AIJ matrix
-_OWN_JACOBIAN = ("snes_fd", "snes_fd_color", "snes_mf", "snes_mf_operator",
-                 "snes_test_jacobian")
+def _free_refs():
+    """sys.getrefcount of an array that only a list refers to, seen from a loop over the
+    list as in Problem._free_buffer (the interpreter's own count: borrowed references may
+    make it smaller)."""
+    for buf in [np.empty(1)]:
+        return sys.getrefcount(buf)
+
+
+_FREE_REFS = _free_refs()
 
 
 def _span(t0, t_end):
@@ -111,10 +120,10 @@ def _solver_in_force(snes, ts=None):
     out = {"snes_type": snes.getType(), "snes_linesearch_type": snes.getLineSearch().getType(),
            "snes_rtol": rtol, "snes_atol": atol, "snes_stol": stol, "snes_max_it": max_it,
            "ksp_type": ksp.getType(), "pc_type": pc.getType()}
-    if pc.getType() == PETSc.PC.Type.PYTHON:     # the condensation: S's solver
-        inner = pc.getPythonContext().ksp.getPC()
-        out["pc_type"] = f"python (sealts condensation, S by {inner.getType()})"
-        pc = inner
+    cond = condensed.condensed_pc(ksp)
+    if cond is not None:                          # the condensation: S's solver
+        pc = cond.ksp.getPC()
+        out["pc_type"] = f"python (sealts condensation, S by {pc.getType()})"
     if pc.getType() in (PETSc.PC.Type.LU, PETSc.PC.Type.CHOLESKY):
         out["pc_factor_mat_solver_type"] = pc.getFactorSolverType()
     if ts is not None:
@@ -174,7 +183,8 @@ class Problem:
         self._callback_error = None   # a term's exception in a callback (_guarded)
         # the last Jacobian's COO values, and the state and handle of its matrix
         self._jac_vals = self._jac_state = self._jac_handle = None
-        self._jac_op = None           # the Jacobian as COO values alone (_operator)
+        self._jac_op = None           # the Jacobian as COO values alone (condensed.operator)
+        self._cond = False            # its Prony block's condensation, once computed
         self._buffers = []            # for the Jacobian's values (_free_buffer)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
@@ -292,7 +302,7 @@ class Problem:
         from the OS at every call otherwise, paid for in page faults (the refined fig. 14
         mesh's Prony Jacobian)."""
         for buf in self._buffers:
-            if sys.getrefcount(buf) <= 3:    # the pool, this loop, getrefcount's argument
+            if sys.getrefcount(buf) <= _FREE_REFS:
                 return buf
         self._buffers.append(np.empty(self._rows.size))
         return self._buffers[-1]
@@ -338,7 +348,6 @@ class Problem:
         ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
         vals = self.jacobian_values(t, u, ud, shift)[self._mine]
         if P.getType() == PETSc.Mat.Type.PYTHON:     # the values are the matrix
-            self._jac_vals = vals
             P.stateIncrease()
         else:
             P.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
@@ -391,7 +400,7 @@ class Problem:
     # ---- solver set-up ---------------------------------------------------------------------
     def _default_linear_solver(self, ksp):
         if "prony" in self.fields:
-            if not self._default_condensed(ksp):
+            if not condensed.default_solver(self, ksp):
                 self._default_schur(ksp)
             return
         ksp.setType(PETSc.KSP.Type.PREONLY)
@@ -415,12 +424,10 @@ class Problem:
     def _factor_of(self, ksp):
         """(the PC that factors, its options prefix, the condensation or None): the KSP's
         own PC, or the condensation's LU of S (sealts.problem.condensed)."""
-        pc = ksp.getPC()
-        if pc.getType() == PETSc.PC.Type.PYTHON:
-            ctx = pc.getPythonContext()
-            if hasattr(ctx, "ksp") and hasattr(ctx, "S"):
-                return ctx.ksp.getPC(), ctx.ksp.getOptionsPrefix(), ctx
-        return pc, self.prefix, None
+        cond = condensed.condensed_pc(ksp)
+        if cond is not None:
+            return cond.ksp.getPC(), cond.ksp.getOptionsPrefix(), cond
+        return ksp.getPC(), self.prefix, None
 
     def _arm_lu_fallback(self, snes):
         """After setFromOptions: PETSc's LU in force by default (not chosen on the command
@@ -485,50 +492,6 @@ class Problem:
         if failures - at_start < LU_FAILURES:
             return None
         return f"{failures - at_start} failed Newton solves in a row with PETSc's LU"
-
-    def _condensation(self):
-        """The fixed structure of the Prony block's condensation (computed once), or None
-        where it does not apply: in parallel, or a block that is not diagonal."""
-        if not hasattr(self, "_cond"):
-            self._cond = None
-            if self.comm.getSize() == 1 and self.natural is None:
-                from .condensed import Condensation, NotCondensable
-                try:
-                    self._cond = Condensation(self.ltog[self._rows], self.ltog[self._cols],
-                                              self.n, self.fields["prony"])
-                except NotCondensable:
-                    pass
-        return self._cond
-
-    def _default_condensed(self, ksp):
-        """Serial: the Prony internal variables' diagonal block condensed out exactly
-        (sealts.problem.condensed), S factored by LU; False where it does not apply."""
-        cond = self._condensation()
-        if cond is None:
-            return False
-        from .condensed import CondensedPC
-        ksp.setType(PETSc.KSP.Type.PREONLY)
-        pc = ksp.getPC()
-        pc.setType(PETSc.PC.Type.PYTHON)
-        pc.setPythonContext(CondensedPC(self, cond))
-        return True
-
-    def _operator(self, ksp):
-        """After setFromOptions: where the condensation alone solves Newton's systems (KSP
-        preonly, the Jacobian computed by this problem), the Jacobian as its COO values
-        (sealts.problem.condensed.JacobianOperator) instead of an AIJ matrix; else None."""
-        pc = ksp.getPC()
-        if (ksp.getType() != PETSc.KSP.Type.PREONLY or pc.getType() != PETSc.PC.Type.PYTHON
-                or not hasattr(pc.getPythonContext(), "cond")
-                or any(PETSc.Options(self.prefix).hasName(name) for name in _OWN_JACOBIAN)):
-            return None
-        if self._jac_op is None:
-            from .condensed import JacobianOperator
-            m = self.rend - self.rstart
-            self._jac_op = PETSc.Mat().createPython(((m, self.n), (m, self.n)),
-                                                    JacobianOperator(self), comm=self.comm)
-            self._jac_op.setUp()
-        return self._jac_op
 
     def _default_schur(self, ksp):
         """Prony internal variables first, displacements second: their own block A00 is
@@ -595,7 +558,7 @@ class Problem:
         self._default_linear_solver(snes.getKSP())
         snes.setFromOptions()
         self._set_splits(snes.getKSP())
-        op = self._operator(snes.getKSP())
+        op = condensed.operator(self, snes.getKSP())
         if op is not None:
             snes.setJacobian(self.snes_jacobian, op)
         self._arm_lu_fallback(snes)
@@ -644,7 +607,7 @@ class Problem:
             from .newton_test import UpdateTest
             ts.getSNES().setConvergenceTest(UpdateTest(ts, self.update_test))
         self._set_splits(ts.getSNES().getKSP())
-        op = self._operator(ts.getSNES().getKSP())
+        op = condensed.operator(self, ts.getSNES().getKSP())
         if op is not None:
             ts.setIJacobian(self.ijacobian, op)
         self._arm_lu_fallback(ts.getSNES())
