@@ -432,12 +432,16 @@ class Problem:
     def _arm_lu_fallback(self, snes):
         """After setFromOptions: PETSc's LU in force by default (not chosen on the command
         line or in the scene's [petsc] table) may give way to UMFPACK; another factor
-        package chosen there orders the matrix itself (_own_ordering)."""
+        package chosen there orders the matrix itself (_own_ordering). A PC that the
+        options switched to LU from another type (a Prony problem's condensation) has no
+        package set, so PETSc's own: it took the 'external' ordering meant for the others
+        and failed in its symbolic factorisation (with a null communicator)."""
         pc, prefix, _ = self._factor_of(snes.getKSP())
         chosen = PETSc.Options(prefix).hasName("pc_factor_mat_solver_type")
         lu = pc.getType() == PETSc.PC.Type.LU
-        self._lu_may_fall_back = lu and not chosen and pc.getFactorSolverType() == "petsc"
-        if lu and pc.getFactorSolverType() != "petsc":
+        solver = pc.getFactorSolverType() or "petsc"
+        self._lu_may_fall_back = lu and not chosen and solver == "petsc"
+        if lu and solver != "petsc":
             self._own_ordering(pc, prefix)
 
     def _solvers_in_force(self, snes, ts=None):
