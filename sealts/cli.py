@@ -97,6 +97,7 @@ SOLVER_PREFIXES = ("", "static_", "transfer_", "hold_", "stroke_", "stroke_film_
                    "stroke_start_",
                    # the viscoelastic hold's and stroke's S (sealts.problem.condensed)
                    "hold_condensed_", "stroke_condensed_")
+CONDENSED = "condensed_"
 
 
 # sealts' own solver options (read by sealts, not by a PETSc object): name -> meaning
@@ -121,6 +122,16 @@ def _check_petsc_options(PETSc, given=()):
     if opts.hasName("help"):
         return
     for prefix in SOLVER_PREFIXES:
+        if prefix.endswith(CONDENSED):      # S's solver is a KSP alone: no TS, no SNES
+            ksp = PETSc.KSP().create(comm=PETSc.COMM_SELF)
+            try:
+                ksp.setOptionsPrefix(prefix)
+                ksp.setType(PETSc.KSP.Type.PREONLY)
+                ksp.getPC().setType(PETSc.PC.Type.LU)
+                ksp.setFromOptions()
+            finally:
+                ksp.destroy()
+            continue
         ts = PETSc.TS().create(comm=PETSc.COMM_SELF)
         try:
             ts.setOptionsPrefix(prefix)
