@@ -97,7 +97,6 @@ SOLVER_PREFIXES = ("", "static_", "transfer_", "hold_", "stroke_", "stroke_film_
                    "stroke_start_",
                    # the viscoelastic hold's and stroke's S (sealts.problem.condensed)
                    "hold_condensed_", "stroke_condensed_")
-CONDENSED = "condensed_"
 
 
 # sealts' own solver options (read by sealts, not by a PETSc object): name -> meaning
@@ -118,6 +117,7 @@ def _check_petsc_options(PETSc, given=()):
     here, with the last run's results still in place. Then every option in ``given`` that
     names a sealts solver's TS, SNES, KSP or PC option (``-ts_...``, ``-stroke_snes_...``)
     and was not read is a misspelt name: a SceneError names it."""
+    from .problem.condensed import PREFIX as CONDENSED
     opts = PETSc.Options()
     if opts.hasName("help"):
         return

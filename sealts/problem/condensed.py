@@ -41,9 +41,10 @@ class NotCondensable(ValueError):
 
 @numba.njit(cache=True)
 def condense_kernel(vals, qq_e, qq_q, qr_ptr, qr_e, qr_slot, rq_ptr, rq_e, rq_slot, gid,
-                    L, n_groups, rr_e, s_block, dinv, svals):
+                    L, n_groups, most, rr_e, s_block, dinv, svals):
     """svals = (A_rr entries, then -(A_rq D^-1 A_qr) per group block of L x L slots);
-    dinv = 1 / diag(D). False if a diagonal entry is zero or not finite."""
+    dinv = 1 / diag(D). ``most``: the most entries of A_qr in a row, duplicates included.
+    False if a diagonal entry is zero or not finite."""
     nq = dinv.size
     d = np.zeros(nq)
     for k in range(qq_e.size):
@@ -52,9 +53,6 @@ def condense_kernel(vals, qq_e, qq_q, qr_ptr, qr_e, qr_slot, rq_ptr, rq_e, rq_sl
     for k in range(nrr):
         svals[k] = vals[rr_e[k]]
     blocks = np.zeros(n_groups * L * L)
-    most = 0                       # a q's entries of A_qr, duplicates included
-    for q in range(nq):
-        most = max(most, qr_ptr[q + 1] - qr_ptr[q])
     wv, ws = np.empty(most), np.empty(most, np.int64)
     for q in range(nq):
         if d[q] == 0.0 or not np.isfinite(d[q]):
@@ -165,6 +163,7 @@ class Condensation:
         slot_qr = np.searchsorted(keys, q_qr * nr + r_qr) - start[q_qr]
         slot_rq = np.searchsorted(keys, q_rq * nr + r_rq) - start[q_rq]
         self.qr_ptr, self.qr_e, self.qr_slot, self.qr_r = _by_q(q_qr, qr, slot_qr, r_qr, nq)
+        self.most = int(np.diff(self.qr_ptr).max(initial=0))
         self.rq_ptr, self.rq_e, self.rq_slot, self.rq_r = _by_q(q_rq, rq, slot_rq, r_rq, nq)
         # S's COO: A_rr's entries, then each group's valid L x L slots
         gi = np.repeat(groups[:, :, None], L, axis=2)
@@ -179,7 +178,8 @@ class Condensation:
         zero or non-finite entry."""
         return condense_kernel(vals, self.qq_e, self.qq_q, self.qr_ptr, self.qr_e,
                                self.qr_slot, self.rq_ptr, self.rq_e, self.rq_slot, self.gid,
-                               self.L, self.n_groups, self.rr_e, self.s_block, dinv, svals)
+                               self.L, self.n_groups, self.most, self.rr_e, self.s_block,
+                               dinv, svals)
 
     def from_csr(self, rows, cols, indptr, indices, values):
         """COO values read back from an assembled matrix's CSR arrays: each entry's value
@@ -291,12 +291,13 @@ class JacobianOperator:
 
     def __init__(self, problem):
         self.problem = weakref.proxy(problem)
-        self.rows = problem.ltog[problem._rows].astype(np.int64)
-        self.cols = problem.ltog[problem._cols].astype(np.int64)
+        self.rows = self.cols = None      # at the first product: most runs never ask
 
     def mult(self, A, x, y):
-        coo_mult(self.rows, self.cols, self.problem._jac_vals, x.getArray(readonly=True),
-                 y.getArray())
+        p = self.problem
+        if self.rows is None:
+            self.rows, self.cols = p.ltog[p._rows], p.ltog[p._cols]
+        coo_mult(self.rows, self.cols, p._jac_vals, x.getArray(readonly=True), y.getArray())
 
 
 # SNES options under which SNES computes or tests the Jacobian itself, into an AIJ matrix

@@ -472,12 +472,12 @@ class Problem:
             return False
         if why is not None:
             self.lu_fallback_why = why
-        pc, prefix, condensed = self._factor_of(ksp)
+        pc, prefix, cond = self._factor_of(ksp)
         pc.reset()                    # the factor goes; SNES sets the operators again
         pc.setFactorSolverType("umfpack")
         self._own_ordering(pc, prefix)
-        if condensed is not None:     # ... but S is the condensation's own
-            condensed.ksp.setOperators(condensed.S)
+        if cond is not None:          # ... but S is the condensation's own
+            cond.ksp.setOperators(cond.S)
         self._lu_may_fall_back = False
         self.lu_fallback = float(t)
         self._solvers_in_force(snes, getattr(self, "_ts", None))
