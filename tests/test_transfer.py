@@ -200,3 +200,22 @@ def test_a_pressurised_seal_carried_to_the_refined_mesh_settles_there(pressurise
     assert carried.results["front_change_edges"] < 1e-4
     assert carried.results["contact_force_total"] == pytest.approx(
         pressurised.results["contact_force_total"], rel=1e-2)
+
+
+def test_the_dilatation_correction_turns_no_element_over():
+    """Four planar elements round one free node: asked to grow one element to 2.5 times its
+    area with its neighbours held at theirs, the least-norm Gauss-Newton step carries the
+    node past the opposite element's corner (J < 0 there: the carried state the paper's
+    O-ring at 40 MPa met in the corner of rod and wall); the correction stops short, every
+    Gauss point keeping at least half its J before it, and leaves the misfit."""
+    from sealts.solid.dilatation import gauss_J, match_dilatation
+    from sealts.solid.term import NeoHooke, SolidTerm
+    x, y = np.meshgrid(np.linspace(0.0, 2.0, 3), np.linspace(0.0, 2.0, 3))
+    X = np.column_stack([x.ravel(), y.ravel()])
+    conn = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
+    solid = SolidTerm(X, conn, NeoHooke(0.5, 0.01), False)
+    fixed = [d for k in range(9) if k != 4 for d in (2 * k, 2 * k + 1)]
+    u, misfit = match_dilatation(solid, np.zeros(18), np.array([2.5, 1.0, 1.0, 1.0]),
+                                 fixed, 18)
+    assert gauss_J(solid, u).min() >= 0.5
+    assert misfit > 0.5 and np.abs(u[8:10]).min() > 0.1     # it moved, as far as it could
