@@ -65,6 +65,30 @@ def test_condensed_solve_is_the_exact_solve(touch):
     assert np.abs(x - xd).max() < 1e-11 * np.abs(xd).max()
 
 
+def test_the_prony_term_s_own_condensation_is_the_exact_solve():
+    """Where the Jacobian is the operator of COO values (KSP preonly), the Prony term gives
+    S's values on A_rr's entries alone (K_uu - w sum_i g_i / (shift tau_i A + 1) B^T L dS
+    B per Gauss point), and reduces, back-substitutes and multiplies through its B^T L and
+    dS B: the solve is the dense one's to round-off, with constrained rows, and the values
+    the Problem keeps are S's entries only."""
+    from sealts.problem.condensed import structured
+    problem, u, ud, b = prony_problem()
+    snes = problem.make_snes()
+    ksp = snes.getKSP()
+    J = snes.getJacobian()[0]
+    assert J.getType() == "python"
+    problem._assemble_jacobian(0.0, problem._owned(u), problem._owned(ud), 7.0, J, J)
+    st = structured(problem)
+    assert st is not None and problem._jac_vals.size == st.n_values
+    assert st.n_values < problem._rows.size // 4
+    ksp.setOperators(J, J)
+    x = problem.U.duplicate()
+    ksp.solve(problem._owned(b), x)
+    assert ksp.getConvergedReason() > 0 and ksp.getPC().getPythonContext().st is st
+    xd = np.linalg.solve(problem.jacobian_dense(0.0, u, ud, 7.0), b)
+    assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
+
+
 def test_inner_solver_takes_its_options_from_the_prefix():
     """The factorisation of S is tuned from the command line: <prefix>condensed_... (PETSc's
     LU is S's default at this size)."""

@@ -22,7 +22,12 @@ symbolically anew at every set-up.
 The PC reads the values the Problem last assembled (``Problem._jac_vals``) when the
 matrix it is handed is that assembly (its PETSc state), else the matrix's own CSR values.
 Where it solves Newton's systems alone (KSP preonly), the Jacobian is not assembled into
-an AIJ matrix at all: :class:`JacobianOperator` holds it as those COO values.
+an AIJ matrix at all: :class:`JacobianOperator` holds it as those COO values. There, when
+the term that owns the block condenses it itself (the Prony term: its blocks per Gauss
+point are rank 4, so its part of S is one 8 x 8 block per Gauss point,
+:class:`sealts.solid.viscoelastic.PronyTerm`), the values are S's own on A_rr's entries
+(:class:`Structured`): the off-diagonal blocks are never formed, and the right-hand
+side's reduction, the back-substitution and the operator's product go through the term.
 """
 import weakref
 
@@ -223,7 +228,7 @@ class CondensedPC:
         inner.setType(PETSc.PC.Type.LU)
         problem._default_factor(inner, c.rdofs.size, self.S.getInfo()["nz_allocated"])
         self.ksp.setOperators(self.S)
-        self.vals = None
+        self.vals = self.st = None
         self.read_back = False        # values read back from an assembled matrix
 
     def setFromOptions(self, pc):
@@ -245,7 +250,12 @@ class CondensedPC:
         pc.setFailedReason(PETSc.PC.FailedReason.NOERROR)
         _, P = pc.getOperators()
         self.vals = vals = np.ascontiguousarray(self._values(P), float)
-        if not self.cond.values(vals, self.dinv, self.svals):
+        # the operator's values are S's own where a term condenses its block itself
+        self.st = structured(self.problem) if P.getType() == PETSc.Mat.Type.PYTHON else None
+        if self.st is not None:
+            self.svals[:vals.size] = vals
+            self.svals[vals.size:] = 0.0      # the group blocks: in those entries already
+        elif not self.cond.values(vals, self.dinv, self.svals):
             pc.setFailedReason(PETSc.PC.FailedReason.SETUP_ERROR)    # D not invertible
             return
         self.S.setValuesCOO(self.svals, addv=PETSc.InsertMode.INSERT_VALUES)
@@ -259,16 +269,22 @@ class CondensedPC:
             pc.setFailedReason(reason)
 
     def apply(self, pc, x, y):
-        c = self.cond
+        c, st = self.cond, self.st
         b = x.getArray(readonly=True)
-        reduce_rhs(b, c.qdofs, c.rdofs, self.vals, c.rq_ptr, c.rq_e, c.rq_r, self.dinv,
-                   self.z.getArray())
+        if st is not None:
+            st.reduce(b, self.z.getArray())
+        else:
+            reduce_rhs(b, c.qdofs, c.rdofs, self.vals, c.rq_ptr, c.rq_e, c.rq_r, self.dinv,
+                       self.z.getArray())
         self.ksp.solve(self.z, self.xr)
         if self.ksp.getConvergedReason() < 0:
             pc.setFailedReason(self.ksp.getPC().getFailedReason()
                                or PETSc.PC.FailedReason.SUBPC_ERROR)
-        back_substitute(b, c.qdofs, c.rdofs, self.vals, c.qr_ptr, c.qr_e, c.qr_r,
-                        self.dinv, self.xr.getArray(readonly=True), y.getArray())
+        if st is not None:
+            st.back(b, self.xr.getArray(readonly=True), y.getArray())
+        else:
+            back_substitute(b, c.qdofs, c.rdofs, self.vals, c.qr_ptr, c.qr_e, c.qr_r,
+                            self.dinv, self.xr.getArray(readonly=True), y.getArray())
 
     def view(self, pc, viewer):
         c = self.cond
@@ -295,9 +311,92 @@ class JacobianOperator:
 
     def mult(self, A, x, y):
         p = self.problem
+        st = structured(p)
+        if st is not None:
+            st.mult(p._jac_vals, x.getArray(readonly=True), y.getArray())
+            return
         if self.rows is None:
             self.rows, self.cols = p.ltog[p._rows], p.ltog[p._cols]
         coo_mult(self.rows, self.cols, p._jac_vals, x.getArray(readonly=True), y.getArray())
+
+
+class Structured:
+    """The condensation by the term that owns the diagonal block (a Prony term's
+    ``condensed_values``, ``condensed_reduce``, ``condensed_back``, ``condensed_mult``):
+    where the Jacobian is the operator of COO values (:func:`operator`), the Problem
+    computes S's values on the Jacobian's entries that couple no internal variable (A_rr's,
+    the first of S's entries) with the term's S_rr part in place of its K_uu, and the
+    right-hand side's reduction, the back-substitution and the operator's product go
+    through the term: the off-diagonal blocks' values, some 30 per internal variable, are
+    never formed, nor their products summed entry by entry.
+
+    ``rows``, ``cols``: those entries (serial numbering), ``fixed_entries`` the ones in
+    constrained rows (zeroed, as in the Jacobian), ``n_values`` their number.
+    """
+
+    def __init__(self, problem, cond, term):
+        self.term, self.cond = term, cond
+        keep = np.concatenate([np.arange(np.asarray(t.rows).size) < (
+            term.n_condensed if t is term else np.inf) for t in problem.terms])
+        if problem.constraints is not None:
+            keep = np.concatenate([keep, np.ones(problem._rows.size - keep.size, bool)])
+        rows, cols = problem.ltog[problem._rows][keep], problem.ltog[problem._cols][keep]
+        self.rows, self.cols, self.n_values = rows, cols, rows.size
+        ridx = np.full(problem.n, -1, np.int64)
+        ridx[cond.rdofs] = np.arange(cond.rdofs.size)
+        nrr = cond.rr_e.size
+        if rows.size != nrr or (ridx[rows] != cond.s_rows[:nrr]).any() or (
+                ridx[cols] != cond.s_cols[:nrr]).any():
+            raise NotCondensable("the term's condensed entries are not A_rr's")
+        fixed = np.zeros(problem.n, bool)
+        if problem.constraints is not None:
+            fixed_entry = np.zeros(problem._rows.size, bool)
+            fixed_entry[problem._fixed_entries] = True
+            self.fixed_entries = np.flatnonzero(fixed_entry[keep])
+            fixed[problem.ltog[problem.constraints.dofs]] = True
+        else:
+            self.fixed_entries = np.zeros(0, np.int64)
+        if fixed[cond.qdofs].any():
+            raise NotCondensable("a constrained internal variable")
+        self.free = (~fixed).astype(float)        # rows that take the blocks' parts
+        self.work = np.zeros(problem.n)
+
+    def reduce(self, b, z):
+        """z = b_r - A_rq D^-1 b_q."""
+        w = self.work
+        w[:] = 0.0
+        self.term.condensed_reduce(b, w)
+        r = self.cond.rdofs
+        z[:] = b[r] + w[r] * self.free[r]
+
+    def back(self, b, xr, x):
+        """x_r = xr, x_q = D^-1 (b_q - A_qr x_r)."""
+        x[self.cond.rdofs] = xr
+        self.term.condensed_back(b, x)
+
+    def mult(self, vals, x, y):
+        """y = J x from S's values and the term's blocks."""
+        coo_mult(self.rows, self.cols, vals, x, y)
+        w = self.work
+        w[:] = 0.0
+        self.term.condensed_mult(x, w)
+        y += w * self.free
+
+
+def structured(problem):
+    """The problem's :class:`Structured` condensation (found once), or None: without a
+    condensation, or where no term condenses the whole Prony block itself."""
+    if problem._structured is False:
+        problem._structured = None
+        cond = condensation(problem)
+        own = [t for t in problem.terms if hasattr(t, "condensed_values")]
+        if cond is not None and len(own) == 1 and np.array_equal(
+                np.sort(np.asarray(own[0].qdofs)), np.sort(problem.ltog[cond.qdofs])):
+            try:
+                problem._structured = Structured(problem, cond, own[0])
+            except NotCondensable:
+                pass
+    return problem._structured
 
 
 # SNES options under which SNES computes or tests the Jacobian itself, into an AIJ matrix

@@ -13,7 +13,8 @@ and a steady scene solves F(t, U, 0) = 0 with SNES. Each physics term supplies
 
 The Problem concatenates the patterns once (``setPreallocationCOO``) and, per Newton step,
 concatenates the values (``setValuesCOO``; where the Prony block's condensation solves
-alone, :mod:`.condensed` reads the values themselves and no matrix is assembled). Terms
+alone, :mod:`.condensed` reads the values themselves and no matrix is assembled, and the
+Prony term gives its part of the condensed system in place of its Jacobian). Terms
 never see PETSc objects, so adding a term touches no other. Dirichlet constraints
 (``Constraints``: dofs and their values at time t) replace whole rows after the terms are
 summed, u_i - g_i(t) = 0, so terms need not know about them. ``setFromOptions()`` is
@@ -185,6 +186,7 @@ class Problem:
         self._jac_vals = self._jac_state = self._jac_handle = None
         self._jac_op = None           # the Jacobian as COO values alone (condensed.operator)
         self._cond = False            # its Prony block's condensation, once computed
+        self._structured = False      # ... by the term that owns the block, once found
         self._buffers = []            # for the Jacobian's values (_free_buffer)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
@@ -290,21 +292,35 @@ class Problem:
                  for term in self.terms]
         if self.constraints is not None:
             parts.append(np.ones(int(self._fixed_own.sum())))
-        vals = np.concatenate(parts, out=self._free_buffer())
+        vals = np.concatenate(parts, out=self._free_buffer(self._rows.size))
         if self.constraints is not None:
             vals[self._fixed_entries] = 0.0
         return vals
 
-    def _free_buffer(self):
+    def condensed_values(self, st, t, u, udot, shift):
+        """The COO values of the Schur complement over the Prony internal variables, on the
+        Jacobian's entries that couple no internal variable (:class:`.condensed.Structured`
+        ``st``): the term that condenses its own block gives its part of S, the others their
+        Jacobians; as :meth:`jacobian_values`, the caller's until it lets go of it."""
+        parts = [np.asarray(term.condensed_values(t, u, udot, shift) if term is st.term
+                            else term.jacobian_values(t, u, udot, shift), float)
+                 for term in self.terms]
+        if self.constraints is not None:
+            parts.append(np.ones(int(self._fixed_own.sum())))
+        vals = np.concatenate(parts, out=self._free_buffer(st.n_values))
+        vals[st.fixed_entries] = 0.0
+        return vals
+
+    def _free_buffer(self, size):
         """An array for the Jacobian's values that nothing outside this problem's pool
         refers to (the condensation's PC keeps the values it was set up from, the Problem
         the last ones, _jac_vals): reused, since an array of tens of MB is fresh memory
         from the OS at every call otherwise, paid for in page faults (the refined fig. 14
         mesh's Prony Jacobian)."""
         for buf in self._buffers:
-            if sys.getrefcount(buf) <= _FREE_REFS:
+            if buf.size == size and sys.getrefcount(buf) <= _FREE_REFS:
                 return buf
-        self._buffers.append(np.empty(self._rows.size))
+        self._buffers.append(np.empty(size))
         return self._buffers[-1]
 
     def jacobian_dense(self, t, u, udot, shift):
@@ -346,7 +362,11 @@ class Problem:
     def _assemble_jacobian(self, t, U, Udot, shift, J, P):
         u = self.local(U).copy()
         ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
-        vals = self.jacobian_values(t, u, ud, shift)[self._mine]
+        st = condensed.structured(self) if P.getType() == PETSc.Mat.Type.PYTHON else None
+        if st is not None:    # the Schur complement's values alone (the condensation's)
+            vals = self.condensed_values(st, t, u, ud, shift)
+        else:
+            vals = self.jacobian_values(t, u, ud, shift)[self._mine]
         if P.getType() == PETSc.Mat.Type.PYTHON:     # the values are the matrix
             P.stateIncrease()
         else:

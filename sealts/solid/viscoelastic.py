@@ -122,26 +122,36 @@ def _pk1_by_h_into(f, L):
 
 
 @numba.njit(cache=True)
-def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac):
+def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac,
+                 condensed=False):
     """All elements at once. u node-major displacements; H, Hdot (ne, 4, na, 4) active
     internal variables and rates; Hfrozen (ne, 4, 4) = sum_frozen g_i H_i(0); tau (na,) the
     shifted relaxation times. Returns r_u (ne, 8), r_H (ne, 4, na, 4); a non-empty ``jac``
     is overwritten with the Jacobian's values in :class:`PronyTerm`'s COO order: K_uu (ne,
     8, 8), K_uH (ne, 4, na, 8, 4), K_Hu (ne, 4, na, 4, 8), K_HH (ne, 4, na, 4) (the
     diagonal, one value per internal variable); an empty one skips the blocks (a residual
-    alone). B as :func:`.q1p0.gauss_operators` builds it (its zero pattern is used); every
-    work array is allocated once per call."""
+    alone). With ``condensed``, ``jac`` (ne * 320) gets instead the condensed K_uu (ne, 8,
+    8) (:meth:`PronyTerm.condensed_values`), then B^T L and dS_iso B of every Gauss point
+    (ne, 4, 64). B as :func:`.q1p0.gauss_operators` builds it (its zero pattern is used);
+    every work array is allocated once per call."""
     ne, na = conn.shape[0], g.shape[0]
     ru = np.zeros((ne, 8))
     rH = np.zeros((ne, 4, na, 4))
     tangent = jac.size > 0
     nk = ne if tangent else 0
-    o1, o2, o3 = nk * 64, nk * 64 + nk * na * 128, nk * 64 + nk * na * 256
+    nb = 0 if condensed else nk   # the off-diagonal blocks' elements
+    o1, o2, o3 = nk * 64, nk * 64 + nb * na * 128, nk * 64 + nb * na * 256
     jac[:o1] = 0.0                 # K_uu is summed over the Gauss points; the rest is set
     Kuu = jac[:o1].reshape((nk, 8, 8))
-    KuH = jac[o1:o2].reshape((nk, 4, na, 8, 4))
-    KHu = jac[o2:o3].reshape((nk, 4, na, 4, 8))
-    KHH = jac[o3:].reshape((nk, 4, na, 4))
+    KuH = jac[o1:o2].reshape((nb, 4, na, 8, 4))
+    KHu = jac[o2:o3].reshape((nb, 4, na, 4, 8))
+    KHH = jac[o3:o3 + nb * na * 16].reshape((nb, 4, na, 4))
+    # condensed: the Gauss points' B^T L and dS B, and sum_i g_i / (shift tau_i + 1)
+    ng = nk if condensed else 0
+    GP = jac[o1:o1 + ng * 256].reshape((ng, 4, 64))
+    csum = 0.0
+    for k in range(na):
+        csum += g[k] / (shift * tau[k] + 1.0)
     ue, f, Htot, P = np.empty(8), np.empty(5), np.empty(4), np.empty(5)
     M, MB = np.empty((5, 5)), np.empty((5, 8))
     S, dS, L = np.empty(4), np.empty((4, 5)), np.empty((5, 4))
@@ -181,6 +191,18 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac):
                     BtL[j + 1, c] = Bq[2, j + 1] * L[2, c] + Bq[3, j + 1] * L[3, c]
                     dSB[c, j] = dS[c, 0] * Bq[0, j] + dS[c, 1] * Bq[1, j] + dS[c, 4] * Bq[4, j]
                     dSB[c, j + 1] = dS[c, 2] * Bq[2, j + 1] + dS[c, 3] * Bq[3, j + 1]
+            if condensed:
+                # K_uu - sum_i K_uH,i K_HH,i^-1 K_Hu,i = K_uu - w csum B^T L dS B
+                for j in range(8):
+                    for c in range(4):
+                        GP[e, q, 4 * j + c] = BtL[j, c]
+                        GP[e, q, 32 + 8 * c + j] = dSB[c, j]
+                    for m in range(8):
+                        acc = 0.0
+                        for c in range(4):
+                            acc += BtL[j, c] * dSB[c, m]
+                        Kuu[e, j, m] -= w * csum * acc
+                continue
             for k in range(na):
                 gw = g[k] * w
                 d = gw * (shift * tau[k] + 1.0)
@@ -190,6 +212,77 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac):
                         KuH[e, q, k, j, c] = -gw * BtL[j, c]
                         KHu[e, q, k, c, j] = -gw * dSB[c, j]
     return ru, rH
+
+
+@numba.njit(cache=True)
+def _gp_dsb_x(GP, e, q, dofs, x, out):
+    """out (4) = dS B x_e at the Gauss point (e, q) (GP as the condensed kernel stores it)."""
+    for c in range(4):
+        acc = 0.0
+        for j in range(8):
+            acc += GP[e, q, 32 + 8 * c + j] * x[dofs[e, j]]
+        out[c] = acc
+
+
+@numba.njit(cache=True)
+def condensed_reduce(GP, dofs, hdofs, a, b, z):
+    """z[u] += -K_uH D^-1 b_H = sum over Gauss points of B^T L sum_i a_i b_H,i, with
+    a_i = 1 / (shift tau_i + 1) (K_uH,i = -g_i w B^T L, D_i = g_i w (shift tau_i + 1))."""
+    ne, na = dofs.shape[0], a.size
+    v = np.empty(4)
+    for e in range(ne):
+        for q in range(4):
+            for c in range(4):
+                acc = 0.0
+                for k in range(na):
+                    acc += a[k] * b[hdofs[e, q, k, c]]
+                v[c] = acc
+            for j in range(8):
+                acc = 0.0
+                for c in range(4):
+                    acc += GP[e, q, 4 * j + c] * v[c]
+                z[dofs[e, j]] += acc
+
+
+@numba.njit(cache=True)
+def condensed_back(GP, dofs, hdofs, W, g, a, b, x):
+    """x_H = D^-1 (b_H - K_Hu x_u) = a_i (b_H,i / (g_i w) + dS B x_e) (K_Hu,i = -g_i w dS
+    B), x_u given."""
+    ne, na = dofs.shape[0], a.size
+    d = np.empty(4)
+    for e in range(ne):
+        for q in range(4):
+            _gp_dsb_x(GP, e, q, dofs, x, d)
+            w = W[e, q]
+            for k in range(na):
+                for c in range(4):
+                    h = hdofs[e, q, k, c]
+                    x[h] = a[k] * (b[h] / (g[k] * w) + d[c])
+
+
+@numba.njit(cache=True)
+def condensed_mult(GP, dofs, hdofs, W, g, a, x, y):
+    """y += the product of x with the blocks the condensed K_uu leaves out:
+    y_u += K_uH (D^-1 K_Hu x_u + x_H) = -w B^T L sum_i g_i (x_H,i - a_i dS B x_e),
+    y_H += K_Hu x_u + D x_H = g_i w (x_H,i / a_i - dS B x_e)."""
+    ne, na = dofs.shape[0], a.size
+    d, v = np.empty(4), np.empty(4)
+    for e in range(ne):
+        for q in range(4):
+            _gp_dsb_x(GP, e, q, dofs, x, d)
+            w = W[e, q]
+            for c in range(4):
+                v[c] = 0.0
+            for k in range(na):
+                for c in range(4):
+                    h = hdofs[e, q, k, c]
+                    v[c] += g[k] * (x[h] - a[k] * d[c])
+                    y[h] += g[k] * w * (x[h] / a[k] - d[c])
+            for j in range(8):
+                acc = 0.0
+                for c in range(4):
+                    acc += GP[e, q, 4 * j + c] * v[c]
+                y[dofs[e, j]] -= w * acc
 
 
 class PronyTerm(Term):
@@ -220,16 +313,16 @@ class PronyTerm(Term):
                 np.broadcast_to(ed[:, None, None, None, :], (ne, 4, na, 4, 8)).ravel(),
                 hd.ravel()]
         self.rows, self.cols = np.concatenate(rows), np.concatenate(cols)
-        self._jac = None
+        self._jac = self._cjac = self._ca = None
 
-    def _evaluate(self, t, u, udot, shift, jac):
+    def _evaluate(self, t, u, udot, shift, jac, condensed=False):
         s = self.solid
         us = u[s.udofs].ravel()
         H = u[self.hdofs]
         Hd = np.zeros_like(H) if udot is None else udot[self.hdofs]
         A = self.shift(t)
         return prony_kernel(us, s.conn, s.W, s.B, self.mat.c10, self.mat.c01, self.g,
-                            A * self.tau, H, Hd, self.frozen, shift, jac)
+                            A * self.tau, H, Hd, self.frozen, shift, jac, condensed)
 
     def add_residual(self, t, u, udot, f):
         ru, rH = self._evaluate(t, u, udot, 0.0, np.empty(0))
@@ -243,6 +336,55 @@ class PronyTerm(Term):
             self._jac = np.empty(self.rows.size)
         self._evaluate(t, u, udot, shift, self._jac)
         return self._jac
+
+    # ---- the condensation of the internal variables (sealts.problem.condensed) ----------
+    # Per Gauss point and active term the blocks are K_uH,i = -g_i w B^T L,
+    # K_Hu,i = -g_i w dS B and the diagonal D_i = g_i w (shift tau_i + 1), so the Schur
+    # complement's part of this term is one 8 x 8 block per Gauss point,
+    #     K_uu - sum_i K_uH,i D_i^-1 K_Hu,i = K_uu - w (sum_i g_i / (shift tau_i + 1)) B^T L dS B,
+    # and the right-hand side's reduction, the back-substitution and the product with the
+    # blocks left out need B^T L and dS B alone: the 4 x 8 x 2 x na values of the
+    # off-diagonal blocks per Gauss point are never formed.
+
+    @property
+    def qdofs(self):
+        """The internal variables: the diagonal block this term condenses."""
+        return self.hdofs.ravel()
+
+    @property
+    def n_condensed(self):
+        """How many of the first COO entries (K_uu) :meth:`condensed_values` gives."""
+        return self.solid.conn.shape[0] * 64
+
+    def condensed_values(self, t, u, udot, shift):
+        """K_uu - K_uH D^-1 K_Hu on the first :attr:`n_condensed` entries of the pattern (a
+        buffer of the term's, overwritten by its next call); keeps what
+        :meth:`condensed_reduce`, :meth:`condensed_back` and :meth:`condensed_mult` need."""
+        ne = self.solid.conn.shape[0]
+        if self._cjac is None:
+            self._cjac = np.empty(ne * 320)
+        self._evaluate(t, u, udot, shift, self._cjac, condensed=True)
+        self._ca = 1.0 / (shift * self.shift(t) * self.tau + 1.0)
+        return self._cjac[:ne * 64]
+
+    def condensed_reduce(self, b, z):
+        """z[u dofs] += -K_uH D^-1 b_H (b, z full arrays of the problem's dofs)."""
+        ne = self.solid.conn.shape[0]
+        condensed_reduce(self._cjac[ne * 64:].reshape(ne, 4, 64), self.solid.dofs,
+                         self.hdofs, self._ca, b, z)
+
+    def condensed_back(self, b, x):
+        """x[H dofs] = D^-1 (b_H - K_Hu x_u), from x's displacements."""
+        ne = self.solid.conn.shape[0]
+        condensed_back(self._cjac[ne * 64:].reshape(ne, 4, 64), self.solid.dofs, self.hdofs,
+                       self.solid.W, self.g, self._ca, b, x)
+
+    def condensed_mult(self, x, y):
+        """y += (K_uH D^-1 K_Hu x_u + K_uH x_H, K_Hu x_u + D x_H): with the condensed K_uu's
+        product, the Jacobian's."""
+        ne = self.solid.conn.shape[0]
+        condensed_mult(self._cjac[ne * 64:].reshape(ne, 4, 64), self.solid.dofs, self.hdofs,
+                       self.solid.W, self.g, self._ca, x, y)
 
     def viscous_cauchy(self, u):
         """The Prony part of the Cauchy stress at every Gauss point, (ne, 4, 4) as
