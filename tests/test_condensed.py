@@ -87,6 +87,14 @@ def test_the_prony_term_s_own_condensation_is_the_exact_solve():
     assert ksp.getConvergedReason() > 0 and ksp.getPC().getPythonContext().st is st
     xd = np.linalg.solve(problem.jacobian_dense(0.0, u, ud, 7.0), b)
     assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
+    assert condensation(problem)._s is None     # the generic products' structure unbuilt
+    # handed the assembled matrix after all, the same PC condenses it the generic way
+    problem._assemble_jacobian(0.0, problem._owned(u), problem._owned(ud), 7.0, problem.J,
+                               problem.J)
+    ksp.setOperators(problem.J, problem.J)
+    ksp.solve(problem._owned(b), x)
+    assert ksp.getPC().getPythonContext().st is None
+    assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
 
 
 def test_inner_solver_takes_its_options_from_the_prefix():

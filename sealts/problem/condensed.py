@@ -121,9 +121,12 @@ def _by_q(q, e, slot, r, nq):
 
 class Condensation:
     """The fixed structure: which COO entries are D, A_qr, A_rq, A_rr, and where each
-    product of A_rq D^-1 A_qr lands in S's COO values."""
+    product of A_rq D^-1 A_qr lands in S's COO values. With ``lazy``, the products' part
+    (the costly one: seconds on the refined fig. 14 mesh) waits until the generic
+    condensation is first asked for (:meth:`generic`); a problem whose Prony term condenses
+    itself (:class:`Structured`) needs only A_rr's entries."""
 
-    def __init__(self, rows, cols, n, qdofs):
+    def __init__(self, rows, cols, n, qdofs, lazy=False):
         rows = np.asarray(rows, np.int64)
         cols = np.asarray(cols, np.int64)
         qdofs = np.unique(np.asarray(qdofs, np.int64))
@@ -143,9 +146,23 @@ class Condensation:
         self.n, self.qdofs, self.rdofs = n, qdofs.astype(np.int32), rdofs.astype(np.int32)
         self.qq_e = np.flatnonzero(qq).astype(np.int32)
         self.qq_q = qidx[rows[qq]].astype(np.int32)
+        self.rr_e = np.flatnonzero(~rq_ & ~cq_).astype(np.int32)
+        # S's COO starts with A_rr's entries (in the r numbering)
+        self.rr_rows, self.rr_cols = ridx[rows[self.rr_e]], ridx[cols[self.rr_e]]
+        self._args = (rows, cols, rq_, cq_, qidx, ridx)
+        self._s = None
+        if not lazy:
+            self.generic()
+
+    def generic(self):
+        """The products' structure (once): each internal variable's coupled unknowns, their
+        groups (an element's) and S's COO entries for the groups' blocks."""
+        if self._s is not None:
+            return
+        rows, cols, rq_, cq_, qidx, ridx = self._args
+        qdofs, rdofs = self.qdofs, self.rdofs
         qr = np.flatnonzero(rq_ & ~cq_)
         rq = np.flatnonzero(~rq_ & cq_)
-        self.rr_e = np.flatnonzero(~rq_ & ~cq_).astype(np.int32)
         nq, nr = qdofs.size, rdofs.size
         # each q's coupled r, sorted: its row's columns and its column's rows
         q_qr, r_qr = qidx[rows[qr]], ridx[cols[qr]]
@@ -175,12 +192,25 @@ class Condensation:
         gj = np.repeat(groups[:, None, :], L, axis=1)
         valid = ((gi >= 0) & (gj >= 0)).ravel()
         self.s_block = np.flatnonzero(valid).astype(np.int32)
-        self.s_rows = np.concatenate([ridx[rows[self.rr_e]], gi.ravel()[valid]])
-        self.s_cols = np.concatenate([ridx[cols[self.rr_e]], gj.ravel()[valid]])
+        self._s = (np.concatenate([self.rr_rows, gi.ravel()[valid]]),
+                   np.concatenate([self.rr_cols, gj.ravel()[valid]]))
+        self._args = None
+
+    @property
+    def s_rows(self):
+        """S's COO rows: A_rr's entries, then the groups' blocks."""
+        self.generic()
+        return self._s[0]
+
+    @property
+    def s_cols(self):
+        self.generic()
+        return self._s[1]
 
     def values(self, vals, dinv, svals):
         """S's COO values and 1 / diag(D) from the Jacobian's COO values; False if D has a
         zero or non-finite entry."""
+        self.generic()
         return condense_kernel(vals, self.qq_e, self.qq_q, self.qr_ptr, self.qr_e,
                                self.qr_slot, self.rq_ptr, self.rq_e, self.rq_slot, self.gid,
                                self.L, self.n_groups, self.most, self.rr_e, self.s_block,
@@ -211,12 +241,8 @@ class CondensedPC:
         # through, and would keep the Problem alive
         self.problem, self.cond = weakref.proxy(problem), cond
         c = cond
-        self.S = PETSc.Mat().create(comm=PETSc.COMM_SELF)
-        self.S.setSizes((c.rdofs.size, c.rdofs.size))
-        self.S.setType(PETSc.Mat.Type.AIJ)
-        self.S.setPreallocationCOO(c.s_rows.astype(PETSc.IntType),
-                                   c.s_cols.astype(PETSc.IntType))
-        self.svals = np.zeros(c.s_rows.size)
+        self.S = None
+        self._make_s(generic=cond._s is not None)
         self.dinv = np.zeros(c.qdofs.size)
         self.z, self.xr = self.S.createVecs()
         # S's solver: the problem's default LU for its size (Problem._default_factor, with
@@ -230,6 +256,20 @@ class CondensedPC:
         self.ksp.setOperators(self.S)
         self.vals = self.st = None
         self.read_back = False        # values read back from an assembled matrix
+
+    def _make_s(self, generic):
+        """S's matrix: on A_rr's entries alone (a term's own condensation), or with the
+        groups' blocks for the generic products."""
+        c = self.cond
+        rows, cols = (c.s_rows, c.s_cols) if generic else (c.rr_rows, c.rr_cols)
+        if self.S is not None:
+            self.S.destroy()
+        self.S = PETSc.Mat().create(comm=PETSc.COMM_SELF)
+        self.S.setSizes((c.rdofs.size, c.rdofs.size))
+        self.S.setType(PETSc.Mat.Type.AIJ)
+        self.S.setPreallocationCOO(rows.astype(PETSc.IntType), cols.astype(PETSc.IntType))
+        self.svals = np.zeros(rows.size)
+        self.s_generic = generic
 
     def setFromOptions(self, pc):
         self.ksp.setFromOptions()
@@ -252,6 +292,8 @@ class CondensedPC:
         self.vals = vals = np.ascontiguousarray(self._values(P), float)
         # the operator's values are S's own where a term condenses its block itself
         self.st = structured(self.problem) if P.getType() == PETSc.Mat.Type.PYTHON else None
+        if self.st is None and not self.s_generic:     # an assembled matrix after all
+            self._make_s(generic=True)
         if self.st is not None:
             self.svals[:vals.size] = vals
             self.svals[vals.size:] = 0.0      # the group blocks: in those entries already
@@ -345,8 +387,8 @@ class Structured:
         ridx = np.full(problem.n, -1, np.int64)
         ridx[cond.rdofs] = np.arange(cond.rdofs.size)
         nrr = cond.rr_e.size
-        if rows.size != nrr or (ridx[rows] != cond.s_rows[:nrr]).any() or (
-                ridx[cols] != cond.s_cols[:nrr]).any():
+        if rows.size != nrr or (ridx[rows] != cond.rr_rows).any() or (
+                ridx[cols] != cond.rr_cols).any():
             raise NotCondensable("the term's condensed entries are not A_rr's")
         fixed = np.zeros(problem.n, bool)
         if problem.constraints is not None:
@@ -410,10 +452,14 @@ def condensation(problem):
     if problem._cond is False:
         problem._cond = None
         if problem.comm.getSize() == 1 and problem.natural is None:
+            own = [t for t in problem.terms if hasattr(t, "condensed_values")]
+            lazy = len(own) == 1 and np.array_equal(
+                np.sort(problem.ltog[np.asarray(own[0].qdofs)]),
+                np.unique(np.asarray(problem.fields["prony"], np.int64)))
             try:
                 problem._cond = Condensation(problem.ltog[problem._rows],
                                              problem.ltog[problem._cols], problem.n,
-                                             problem.fields["prony"])
+                                             problem.fields["prony"], lazy=lazy)
             except NotCondensable:
                 pass
     return problem._cond

@@ -40,13 +40,13 @@ from .q1p0 import _bt_a_b, _bt_v, deformation_into
 
 
 @numba.njit(cache=True, inline="always")
-def iso_pk2_into(f, c10, c01, dJ, HJ, P, A, S, dS):
-    """S_iso = F^-1 dpsi_iso/dF as (S11, S22, S33, S12) into S (4), and its derivative in f
-    into dS (4x5); dJ, HJ, P, A: work buffers (5, 5x5, 5, 5x5)."""
+def iso_pk2_into(f, c10, c01, dJ, HJ, P, A, S, dS, tangent=True):
+    """S_iso = F^-1 dpsi_iso/dF as (S11, S22, S33, S12) into S (4), and with ``tangent``
+    its derivative in f into dS (4x5); dJ, HJ, P, A: work buffers (5, 5x5, 5, 5x5)."""
     J = det_into(f, dJ, HJ)
-    isochoric_into(f, J, dJ, HJ, c10, P, A, True)
+    isochoric_into(f, J, dJ, HJ, c10, P, A, tangent)
     if c01 != 0.0:
-        isochoric_i2_add(f, J, dJ, HJ, c01, P, A, True)
+        isochoric_i2_add(f, J, dJ, HJ, c01, P, A, tangent)
     a = f[0] * f[3] - f[1] * f[2]
     i00, i01, i10, i11 = f[3] / a, -f[1] / a, -f[2] / a, f[0] / a
     # S (2x2) = a^-1 P2x2, P2x2 = [[P0, P1], [P2, P3]]
@@ -55,6 +55,8 @@ def iso_pk2_into(f, c10, c01, dJ, HJ, P, A, S, dS):
     s21 = i10 * P[0] + i11 * P[2]
     s22 = i10 * P[1] + i11 * P[3]
     S[0], S[1], S[2], S[3] = s11, s22, P[4] / f[4], 0.5 * (s12 + s21)
+    if not tangent:
+        return
     for k in range(5):
         # d(a^-1 P) = a^-1 (dP - da S), da = unit entry k (k < 4)
         d0, d1, d2, d3 = A[0, k], A[1, k], A[2, k], A[3, k]
@@ -177,7 +179,7 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac,
                 _bt_a_b(Bq, M, Kuu[e], MB)
             if na == 0:
                 continue
-            iso_pk2_into(f, c10, c01, dJ, HJ, Pi, Ai, S, dS)
+            iso_pk2_into(f, c10, c01, dJ, HJ, Pi, Ai, S, dS, tangent)
             for k in range(na):
                 gw = g[k] * w
                 for c in range(4):
@@ -314,12 +316,19 @@ class PronyTerm(Term):
                 hd.ravel()]
         self.rows, self.cols = np.concatenate(rows), np.concatenate(cols)
         self._jac = self._cjac = self._ca = None
+        # the internal variables one run of dofs (the serial layout: cells after vertices):
+        # read and added as a slice, not gathered and scattered entry by entry
+        h0 = int(hd.min()) if hd.size else 0
+        self._hrun = (slice(h0, h0 + hd.size) if np.array_equal(hd.ravel(),
+                                                                 np.arange(h0, h0 + hd.size))
+                      else None)
 
     def _evaluate(self, t, u, udot, shift, jac, condensed=False):
         s = self.solid
         us = u[s.udofs].ravel()
-        H = u[self.hdofs]
-        Hd = np.zeros_like(H) if udot is None else udot[self.hdofs]
+        hd = self.hdofs if self._hrun is None else self._hrun
+        H = u[hd].reshape(self.hdofs.shape)
+        Hd = np.zeros_like(H) if udot is None else udot[hd].reshape(self.hdofs.shape)
         A = self.shift(t)
         return prony_kernel(us, s.conn, s.W, s.B, self.mat.c10, self.mat.c01, self.g,
                             A * self.tau, H, Hd, self.frozen, shift, jac, condensed)
@@ -327,7 +336,10 @@ class PronyTerm(Term):
     def add_residual(self, t, u, udot, f):
         ru, rH = self._evaluate(t, u, udot, 0.0, np.empty(0))
         f += np.bincount(self.solid.dofs.ravel(), ru.ravel(), minlength=f.size)
-        f[self.hdofs] += rH
+        if self._hrun is None:
+            f[self.hdofs] += rH
+        else:
+            f[self._hrun] += rH.ravel()
 
     def jacobian_values(self, t, u, udot, shift):
         # one buffer, overwritten by every call (the Problem copies the values out): a
