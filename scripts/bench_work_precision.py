@@ -755,10 +755,13 @@ def summary(rows):
             continue
         name = SUMMARY.get(r["family"], "{label}").format(label=r["label"])
         if r["status"] != "finished":
+            # its counts are steps 1-2's on the scene's own mesh: not the stroke's
             name += f" ({r['status']} at {r['wall']:.0f} s)"
+            r = {k: v for k, v in r.items() if k not in ("unknowns", "steps", "rejected")}
         lines.setdefault(r["family"], []).append(
             f"| {name} | {fmt(r.get('unknowns'), '{:,}')} | "
-            f"{fmt(r.get('steps'), '{:,}')} ({fmt(r.get('rejected'), '{:,}')}) | "
+            + (f"{fmt(r.get('steps'), '{:,}')} ({fmt(r.get('rejected'), '{:,}')})"
+               if r.get("steps") is not None else "") + " | "
             f"{r['wall']:.1f} | {fmt(r.get('net'), '{:.3f}')} | {e(r, 'e_net')} | "
             f"{e(r, 'e_transport')} | {e(r, 'e_work')} | {e(r, 'e_peak')} |")
     for key, rs in groups.items():
