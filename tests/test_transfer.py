@@ -202,20 +202,51 @@ def test_a_pressurised_seal_carried_to_the_refined_mesh_settles_there(pressurise
         pressurised.results["contact_force_total"], rel=1e-2)
 
 
-def test_the_dilatation_correction_turns_no_element_over():
-    """Four planar elements round one free node: asked to grow one element to 2.5 times its
-    area with its neighbours held at theirs, the least-norm Gauss-Newton step carries the
-    node past the opposite element's corner (J < 0 there: the carried state the paper's
-    O-ring at 40 MPa met in the corner of rod and wall); the correction stops short, every
-    Gauss point keeping at least half its J before it, and leaves the misfit."""
-    from sealts.solid.dilatation import gauss_J, match_dilatation
+def _two_patches():
+    """Two planar 2 x 2 patches of unit squares, apart, each with its middle node free."""
     from sealts.solid.term import NeoHooke, SolidTerm
     x, y = np.meshgrid(np.linspace(0.0, 2.0, 3), np.linspace(0.0, 2.0, 3))
-    X = np.column_stack([x.ravel(), y.ravel()])
-    conn = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
-    solid = SolidTerm(X, conn, NeoHooke(0.5, 0.01), False)
-    fixed = [d for k in range(9) if k != 4 for d in (2 * k, 2 * k + 1)]
-    u, misfit = match_dilatation(solid, np.zeros(18), np.array([2.5, 1.0, 1.0, 1.0]),
-                                 fixed, 18)
+    P = np.column_stack([x.ravel(), y.ravel()])
+    c = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
+    solid = SolidTerm(np.vstack([P, P + [3.0, 0.0]]), np.vstack([c, c + 9]),
+                      NeoHooke(0.5, 0.01), False)
+    fixed = [d for k in range(18) if k not in (4, 13) for d in (2 * k, 2 * k + 1)]
+    return solid, fixed
+
+
+def test_the_dilatation_correction_turns_no_element_over():
+    """Asked to grow one element of the first patch to 2.5 times its area with its
+    neighbours held at theirs, the least-norm Gauss-Newton step carries the free node past
+    the opposite element's corner (J < 0 there: the carried state the paper's O-ring at
+    40 MPa met in the corner of rod and wall); the correction stops that node short, every
+    Gauss point keeping at least half its J, while the second patch's node takes its whole
+    steps to the targets of a known displacement, exactly (with one step length for all
+    nodes it got 40 % of the way)."""
+    from sealts.solid.dilatation import dilatation, gauss_J, match_dilatation
+    solid, fixed = _two_patches()
+    known = np.zeros(36)
+    known[26:28] = [0.12, -0.07]
+    target = dilatation(solid, known)[0]
+    target[:4] = [2.5, 1.0, 1.0, 1.0]
+    u, misfit = match_dilatation(solid, np.zeros(36), target, fixed, 36)
     assert gauss_J(solid, u).min() >= 0.5
-    assert misfit > 0.5 and np.abs(u[8:10]).min() > 0.1     # it moved, as far as it could
+    assert misfit > 0.5 and np.abs(u[8:10]).min() > 0.1      # it moved, as far as it could
+    assert np.abs(u[26:28] - known[26:28]).max() < 1e-9
+
+
+def test_the_dilatation_correction_moves_past_an_element_turned_over_before_it():
+    """A carried state with an element already turned over (J < 0 at a Gauss point of the
+    first patch): that element may not get worse, and the second patch still meets its
+    targets (a bound of half the starting J would have stopped every step)."""
+    from sealts.solid.dilatation import dilatation, gauss_J, match_dilatation
+    solid, fixed = _two_patches()
+    u0 = np.zeros(36)
+    u0[8:10] = [0.97, 0.97]                 # the first patch's node nearly on a corner
+    J0 = gauss_J(solid, u0)
+    assert J0.min() < 0.0
+    known = u0.copy()
+    known[26:28] = [0.12, -0.07]
+    target = dilatation(solid, known)[0]
+    u, _ = match_dilatation(solid, u0, target, fixed, 36)
+    assert np.abs(u[26:28] - known[26:28]).max() < 1e-9
+    assert (gauss_J(solid, u)[J0 <= 0.0] >= J0[J0 <= 0.0]).all()

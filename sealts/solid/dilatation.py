@@ -22,8 +22,10 @@ it lies in (Gauss-Newton on theta(u) = theta_target, the least-norm step
 
 with the nodes of ``fixed`` dofs kept: the boundary, whose penalty contacts take a
 micrometre into a wall as some 10 MPa), each step shortened until every Gauss point keeps
-at least half the J it had before the correction: a target the fixed nodes leave no room
-for is left unmet rather than met by turning an element over.
+at least half the J it had before the correction, node by node (the nodes of an element
+that would fall below it take a shorter step, the others their whole one): a target the
+fixed nodes leave no room for is left unmet rather than met by turning an element over,
+and the other elements meet theirs.
 """
 import numpy as np
 
@@ -54,7 +56,8 @@ def match_dilatation(solid, u, target, fixed, n, iterations=4, tol=1e-9):
     """u (n,) moved by the least norm to elements of dilatation ``target`` (ne,), the
     ``fixed`` dofs kept (module docstring); Gauss-Newton, sparse LU of G G^T (PETSc,
     serial). Returns the new u and the largest misfit |theta - target| left (where the
-    fixed boundary leaves the targets' volume no room, a small rest)."""
+    fixed boundary leaves the targets' volume no room, or an element held short of turning
+    over, its rest)."""
     from petsc4py import PETSc
     u = np.array(u, float)
     ne = solid.dofs.shape[0]
@@ -73,8 +76,7 @@ def match_dilatation(solid, u, target, fixed, n, iterations=4, tol=1e-9):
         for it in range(iterations + 1):
             theta, grad = dilatation(solid, u)
             r = theta - target
-            misfit = float(np.abs(r).max())
-            if misfit < tol or it == iterations:
+            if float(np.abs(r).max()) < tol or it == iterations:
                 break
             G.setValuesCOO((grad * keep[solid.dofs]).ravel(),
                            addv=PETSc.InsertMode.INSERT_VALUES)
@@ -93,21 +95,25 @@ def match_dilatation(solid, u, target, fixed, n, iterations=4, tol=1e-9):
         for obj in (G, A, ksp, lam, rhs, du):
             if obj is not None:
                 obj.destroy()
-    return u, misfit
+    return u, float(np.abs(theta - target).max())
 
 
 def _kept_positive(solid, u, du, J_start, keep=0.5, halvings=20):
-    """u - alpha du with the largest alpha in 1, 1/2, 1/4, ... that leaves every Gauss
-    point at least ``keep`` of its J before the correction, ``J_start`` (a
-    fraction-to-the-boundary rule):
-    the least-norm step of a small element held by fixed boundary nodes can ask more of it
-    than it has, and turn it over (the paper's O-ring at 40 MPa, squeezed into the corner
-    of rod and wall). The elements whose targets that leaves unmet keep a misfit, which the
-    equilibrium solve after the transfer takes out."""
-    alpha = 1.0
-    for _ in range(halvings):
+    """u - alpha du with alpha per element node: 1 where that leaves every Gauss point
+    at least ``keep`` of its J before the correction, ``J_start`` (or, where that J was
+    not positive, a J no smaller), and halved on the nodes of each element that does not
+    until it does (a fraction-to-the-boundary rule, node by node). The least-norm step of
+    a small element held by fixed boundary nodes can ask more of it than it has, and turn
+    it or its neighbour over (the paper's O-ring at 40 MPa, squeezed into the corner of rod
+    and wall); the other elements' nodes take their whole step, and the misfit left is the
+    equilibrium solve's after the transfer."""
+    bound = np.where(J_start > 0.0, keep * J_start, J_start)
+    alpha = np.ones(u.size)
+    for k in range(halvings + 1):
         v = u - alpha * du
-        if np.all(gauss_J(solid, v) >= keep * J_start):
+        bad = (gauss_J(solid, v) < bound).any(axis=1)
+        if not bad.any():
             return v
-        alpha *= 0.5
+        # the last try: those nodes not moved at all
+        alpha[solid.dofs[bad].ravel()] *= 0.5 if k < halvings - 1 else 0.0
     return u
