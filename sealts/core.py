@@ -6,6 +6,7 @@ its residual and its Jacobian values, and, if it carries history, a post-step ho
 ``accepted(t, u)`` that :class:`sealts.problem.Problem` calls after every accepted step
 (docs/design.md, "Term lifecycle").
 """
+import sys
 from dataclasses import dataclass, fields
 
 import numpy as np
@@ -171,3 +172,32 @@ class Recorder(Observer):
 
     def stop(self, t, u):
         self.stops.append((t, u))
+
+
+def _free_refs():
+    """sys.getrefcount of an array that only a list refers to, seen from a loop over the
+    list as in :meth:`BufferPool.get` (the interpreter's own count: borrowed references
+    may make it smaller)."""
+    for buf in [np.empty(1)]:
+        return sys.getrefcount(buf)
+
+
+_FREE_REFS = _free_refs()
+
+
+class BufferPool:
+    """Arrays reused from call to call, but only those nothing outside the pool refers to:
+    a caller may keep the array it was given (a preconditioner set up from its values) and
+    the pool's next ``get`` hands out another. Arrays of tens of MB are fresh memory from
+    the OS at every call otherwise, paid for in page faults."""
+
+    def __init__(self):
+        self.arrays = []
+
+    def get(self, size):
+        """A free array of ``size`` float64 (its values undefined)."""
+        for buf in self.arrays:
+            if buf.size == size and sys.getrefcount(buf) <= _FREE_REFS:
+                return buf
+        self.arrays.append(np.empty(size))
+        return self.arrays[-1]

@@ -97,6 +97,27 @@ def test_the_prony_term_s_own_condensation_is_the_exact_solve():
     assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
 
 
+def test_a_preconditioner_set_up_from_one_jacobian_keeps_its_state_through_the_next():
+    """A lagged preconditioner (-snes_lag_preconditioner, -ksp_reuse_preconditioner): the
+    Problem and the Prony term compute a later Jacobian while the PC keeps the one it was
+    set up from; its reduction and back-substitution must be that Jacobian's too (the
+    term's pool does not reuse the state a PC holds), so that it still solves with it."""
+    problem, u, ud, b = prony_problem()
+    snes = problem.make_snes()
+    ksp = snes.getKSP()
+    J = snes.getJacobian()[0]
+    problem._assemble_jacobian(0.0, problem._owned(u), problem._owned(ud), 7.0, J, J)
+    ksp.setOperators(J, J)
+    ksp.setUp()
+    xd = np.linalg.solve(problem.jacobian_dense(0.0, u, ud, 7.0), b)
+    u2 = u + np.random.default_rng(9).uniform(-0.02, 0.02, u.size)
+    problem._assemble_jacobian(0.0, problem._owned(u2), problem._owned(ud), 70.0, J, J)
+    pc = ksp.getPC()
+    x = problem.U.duplicate()
+    pc.getPythonContext().apply(pc, problem._owned(b), x)
+    assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
+
+
 def test_inner_solver_takes_its_options_from_the_prefix():
     """The factorisation of S is tuned from the command line: <prefix>condensed_... (PETSc's
     LU is S's default at this size)."""
@@ -219,10 +240,10 @@ def test_jacobian_values_held_by_a_caller_are_never_overwritten():
     kept = held.copy()
     later = problem.jacobian_values(0.0, u, ud, 70.0)
     assert np.array_equal(held, kept) and not np.array_equal(later, kept)
-    n = len(problem._buffers)
+    n = len(problem._pool.arrays)
     del later
     problem.jacobian_values(0.0, u, ud, 700.0)
-    assert len(problem._buffers) == n and np.array_equal(held, kept)
+    assert len(problem._pool.arrays) == n and np.array_equal(held, kept)
 
 
 def test_a_failed_factorisation_of_s_is_retried_and_the_run_goes_on():

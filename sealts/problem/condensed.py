@@ -254,7 +254,7 @@ class CondensedPC:
         inner.setType(PETSc.PC.Type.LU)
         problem._default_factor(inner, c.rdofs.size, self.S.getInfo()["nz_allocated"])
         self.ksp.setOperators(self.S)
-        self.vals = self.st = None
+        self.vals = self.st = self.st_state = None
         self.read_back = False        # values read back from an assembled matrix
 
     def _make_s(self, generic):
@@ -293,7 +293,14 @@ class CondensedPC:
         # the operator's values are S's own where a term condenses its block itself
         self.st = structured(self.problem) if P.getType() == PETSc.Mat.Type.PYTHON else None
         if self.st is None and not self.s_generic:     # an assembled matrix after all
+            try:
+                self.cond.generic()
+            except NotCondensable as e:
+                raise RuntimeError(f"the Prony block's condensation of an assembled "
+                                   f"matrix: {e}") from None
             self._make_s(generic=True)
+        # the term's state of these values: a later Jacobian does not change this PC
+        self.st_state = self.st.term.condensed_state() if self.st is not None else None
         if self.st is not None:
             self.svals[:vals.size] = vals
             self.svals[vals.size:] = 0.0      # the group blocks: in those entries already
@@ -314,7 +321,7 @@ class CondensedPC:
         c, st = self.cond, self.st
         b = x.getArray(readonly=True)
         if st is not None:
-            st.reduce(b, self.z.getArray())
+            st.reduce(b, self.z.getArray(), self.st_state)
         else:
             reduce_rhs(b, c.qdofs, c.rdofs, self.vals, c.rq_ptr, c.rq_e, c.rq_r, self.dinv,
                        self.z.getArray())
@@ -323,7 +330,7 @@ class CondensedPC:
             pc.setFailedReason(self.ksp.getPC().getFailedReason()
                                or PETSc.PC.FailedReason.SUBPC_ERROR)
         if st is not None:
-            st.back(b, self.xr.getArray(readonly=True), y.getArray())
+            st.back(b, self.xr.getArray(readonly=True), y.getArray(), self.st_state)
         else:
             back_substitute(b, c.qdofs, c.rdofs, self.vals, c.qr_ptr, c.qr_e, c.qr_r,
                             self.dinv, self.xr.getArray(readonly=True), y.getArray())
@@ -369,8 +376,11 @@ class Structured:
     computes S's values on the Jacobian's entries that couple no internal variable (A_rr's,
     the first of S's entries) with the term's S_rr part in place of its K_uu, and the
     right-hand side's reduction, the back-substitution and the operator's product go
-    through the term: the off-diagonal blocks' values, some 30 per internal variable, are
-    never formed, nor their products summed entry by entry.
+    through the term: the off-diagonal blocks' values, 16 per internal variable (8 in
+    each), are never formed, nor their products summed entry by entry. Where the PC was
+    set up from one Jacobian and the term has since computed another (a lagged
+    preconditioner), the PC's reduction and back-substitution use the state it was set up
+    from (:meth:`PronyTerm.condensed_state`).
 
     ``rows``, ``cols``: those entries (serial numbering), ``fixed_entries`` the ones in
     constrained rows (zeroed, as in the Jacobian), ``n_values`` their number.
@@ -378,6 +388,10 @@ class Structured:
 
     def __init__(self, problem, cond, term):
         self.term, self.cond = term, cond
+        if not np.array_equal(problem.ltog, np.arange(problem.n)):
+            raise NotCondensable("the term's dofs are not the problem's serial ones")
+        if not term.can_condense:
+            raise NotCondensable("a diagonal entry of the block is not positive")
         keep = np.concatenate([np.arange(np.asarray(t.rows).size) < (
             term.n_condensed if t is term else np.inf) for t in problem.terms])
         if problem.constraints is not None:
@@ -403,18 +417,18 @@ class Structured:
         self.free = (~fixed).astype(float)        # rows that take the blocks' parts
         self.work = np.zeros(problem.n)
 
-    def reduce(self, b, z):
-        """z = b_r - A_rq D^-1 b_q."""
+    def reduce(self, b, z, state):
+        """z = b_r - A_rq D^-1 b_q (of the Jacobian of the term's ``state``)."""
         w = self.work
         w[:] = 0.0
-        self.term.condensed_reduce(b, w)
+        self.term.condensed_reduce(b, w, state)
         r = self.cond.rdofs
         z[:] = b[r] + w[r] * self.free[r]
 
-    def back(self, b, xr, x):
+    def back(self, b, xr, x, state):
         """x_r = xr, x_q = D^-1 (b_q - A_qr x_r)."""
         x[self.cond.rdofs] = xr
-        self.term.condensed_back(b, x)
+        self.term.condensed_back(b, x, state)
 
     def mult(self, vals, x, y):
         """y = J x from S's values and the term's blocks."""
@@ -426,18 +440,10 @@ class Structured:
 
 
 def structured(problem):
-    """The problem's :class:`Structured` condensation (found once), or None: without a
-    condensation, or where no term condenses the whole Prony block itself."""
-    if problem._structured is False:
-        problem._structured = None
-        cond = condensation(problem)
-        own = [t for t in problem.terms if hasattr(t, "condensed_values")]
-        if cond is not None and len(own) == 1 and np.array_equal(
-                np.sort(np.asarray(own[0].qdofs)), np.sort(problem.ltog[cond.qdofs])):
-            try:
-                problem._structured = Structured(problem, cond, own[0])
-            except NotCondensable:
-                pass
+    """The problem's :class:`Structured` condensation (found with the condensation), or
+    None: without a condensation, or where no term condenses the whole Prony block
+    itself."""
+    condensation(problem)
     return problem._structured
 
 
@@ -450,16 +456,27 @@ def condensation(problem):
     """The fixed structure of a problem's Prony block condensation (computed once), or
     None where it does not apply: in parallel, or a block that is not diagonal."""
     if problem._cond is False:
-        problem._cond = None
+        problem._cond = problem._structured = None
         if problem.comm.getSize() == 1 and problem.natural is None:
             own = [t for t in problem.terms if hasattr(t, "condensed_values")]
-            lazy = len(own) == 1 and np.array_equal(
-                np.sort(problem.ltog[np.asarray(own[0].qdofs)]),
-                np.unique(np.asarray(problem.fields["prony"], np.int64)))
+            # the Prony term's own condensation needs the generic products' structure
+            # only if it is handed an assembled matrix (lazy: built then)
+            # the problem's own arrays where its numbering is the serial one: the lazy
+            # structure keeps them
+            same = np.array_equal(problem.ltog, np.arange(problem.n))
+            rows, cols = ((problem._rows, problem._cols) if same else
+                          (problem.ltog[problem._rows], problem.ltog[problem._cols]))
             try:
-                problem._cond = Condensation(problem.ltog[problem._rows],
-                                             problem.ltog[problem._cols], problem.n,
-                                             problem.fields["prony"], lazy=lazy)
+                cond = Condensation(rows, cols, problem.n, problem.fields["prony"], lazy=True)
+                if len(own) == 1 and np.array_equal(
+                        np.sort(problem.ltog[np.asarray(own[0].qdofs)]), cond.qdofs):
+                    try:
+                        problem._structured = Structured(problem, cond, own[0])
+                    except NotCondensable:
+                        pass
+                if problem._structured is None:
+                    cond.generic()
+                problem._cond = cond
             except NotCondensable:
                 pass
     return problem._cond

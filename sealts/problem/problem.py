@@ -41,7 +41,6 @@ the post-step hooks, the observers and ``gather`` get) are in serial order on ev
 written by its owner only; every other rank drops its terms' entries in it. The distributed linear solve is PETSc's
 (the default parallel preconditioner is ``redundant`` LU).
 """
-import sys
 from collections import deque
 from dataclasses import asdict
 
@@ -49,7 +48,7 @@ import numpy as np
 from petsc4py import PETSc
 
 from .. import interrupt
-from ..core import Counters, SolveError, StepInfo, StepTooSmall
+from ..core import BufferPool, Counters, SolveError, StepInfo, StepTooSmall
 from . import condensed
 
 
@@ -91,17 +90,6 @@ OSC_WINDOW = 200
 # such steps in a row looked like a stuck controller (_check_min_step) and stopped the
 # default cycle at its reversal as a "snap"
 EVENT_DT_MIN = 1e-9
-
-
-def _free_refs():
-    """sys.getrefcount of an array that only a list refers to, seen from a loop over the
-    list as in Problem._free_buffer (the interpreter's own count: borrowed references may
-    make it smaller)."""
-    for buf in [np.empty(1)]:
-        return sys.getrefcount(buf)
-
-
-_FREE_REFS = _free_refs()
 
 
 def _span(t0, t_end):
@@ -186,8 +174,8 @@ class Problem:
         self._jac_vals = self._jac_state = self._jac_handle = None
         self._jac_op = None           # the Jacobian as COO values alone (condensed.operator)
         self._cond = False            # its Prony block's condensation, once computed
-        self._structured = False      # ... by the term that owns the block, once found
-        self._buffers = []            # for the Jacobian's values (_free_buffer)
+        self._structured = None       # ... by the term that owns the block (found with it)
+        self._pool = BufferPool()     # for the Jacobian's values (_free_buffer)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
@@ -314,14 +302,8 @@ class Problem:
     def _free_buffer(self, size):
         """An array for the Jacobian's values that nothing outside this problem's pool
         refers to (the condensation's PC keeps the values it was set up from, the Problem
-        the last ones, _jac_vals): reused, since an array of tens of MB is fresh memory
-        from the OS at every call otherwise, paid for in page faults (the refined fig. 14
-        mesh's Prony Jacobian)."""
-        for buf in self._buffers:
-            if buf.size == size and sys.getrefcount(buf) <= _FREE_REFS:
-                return buf
-        self._buffers.append(np.empty(size))
-        return self._buffers[-1]
+        the last ones, _jac_vals)."""
+        return self._pool.get(size)
 
     def jacobian_dense(self, t, u, udot, shift):
         """Assembled Jacobian as a dense array (serial tests and diagnostics only)."""

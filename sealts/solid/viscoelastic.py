@@ -33,7 +33,7 @@ dr_H/du = -g_i w dS_iso/df B, and the diagonal dr_H/dH = g_i w (shift tau_i A + 
 import numba
 import numpy as np
 
-from ..core import Term
+from ..core import BufferPool, Term
 from .mooney_rivlin import isochoric_i2_add
 from .neo_hooke import det_into, isochoric_into
 from .q1p0 import _bt_a_b, _bt_v, deformation_into
@@ -151,6 +151,8 @@ def prony_kernel(u, conn, W, B, c10, c01, g, tau, H, Hdot, Hfrozen, shift, jac,
     # condensed: the Gauss points' B^T L and dS B, and sum_i g_i / (shift tau_i + 1)
     ng = nk if condensed else 0
     GP = jac[o1:o1 + ng * 256].reshape((ng, 4, 64))
+    if na == 0:
+        GP[:] = 0.0                # no internal variable: nothing couples through them
     csum = 0.0
     for k in range(na):
         csum += g[k] / (shift * tau[k] + 1.0)
@@ -315,7 +317,8 @@ class PronyTerm(Term):
                 np.broadcast_to(ed[:, None, None, None, :], (ne, 4, na, 4, 8)).ravel(),
                 hd.ravel()]
         self.rows, self.cols = np.concatenate(rows), np.concatenate(cols)
-        self._jac = self._cjac = self._ca = None
+        self._jac = self._cstate = None
+        self._cpool = BufferPool()        # the condensed values and what they need
         # the internal variables one run of dofs (the serial layout: cells after vertices):
         # read and added as a slice, not gathered and scattered entry by entry
         h0 = int(hd.min()) if hd.size else 0
@@ -368,35 +371,53 @@ class PronyTerm(Term):
         """How many of the first COO entries (K_uu) :meth:`condensed_values` gives."""
         return self.solid.conn.shape[0] * 64
 
+    @property
+    def can_condense(self):
+        """D_i = g_i w (shift tau_i A + 1) is positive and finite at every Gauss point (the
+        back-substitution divides by g_i w)."""
+        W = self.solid.W
+        return bool(np.all(self.g > 0.0) and np.all(np.isfinite(self.g))
+                    and np.all(np.isfinite(W)) and np.all(W > 0.0))
+
     def condensed_values(self, t, u, udot, shift):
-        """K_uu - K_uH D^-1 K_Hu on the first :attr:`n_condensed` entries of the pattern (a
-        buffer of the term's, overwritten by its next call); keeps what
-        :meth:`condensed_reduce`, :meth:`condensed_back` and :meth:`condensed_mult` need."""
-        ne = self.solid.conn.shape[0]
-        if self._cjac is None:
-            self._cjac = np.empty(ne * 320)
-        self._evaluate(t, u, udot, shift, self._cjac, condensed=True)
-        self._ca = 1.0 / (shift * self.shift(t) * self.tau + 1.0)
-        return self._cjac[:ne * 64]
+        """K_uu - K_uH D^-1 K_Hu on the first :attr:`n_condensed` entries of the pattern;
+        also keeps, as :meth:`condensed_state`, what :meth:`condensed_reduce`,
+        :meth:`condensed_back` and :meth:`condensed_mult` need. The values are a view of
+        that state (a buffer of the term's pool, not reused while anyone holds it)."""
+        ne, na = self.solid.conn.shape[0], self.g.size
+        buf = self._cpool.get(ne * 320 + na)
+        self._evaluate(t, u, udot, shift, buf[:ne * 320], condensed=True)
+        buf[ne * 320:] = 1.0 / (shift * self.shift(t) * self.tau + 1.0)   # a_i
+        self._cstate = buf
+        return buf[:ne * 64]
 
-    def condensed_reduce(self, b, z):
-        """z[u dofs] += -K_uH D^-1 b_H (b, z full arrays of the problem's dofs)."""
-        ne = self.solid.conn.shape[0]
-        condensed_reduce(self._cjac[ne * 64:].reshape(ne, 4, 64), self.solid.dofs,
-                         self.hdofs, self._ca, b, z)
+    def condensed_state(self):
+        """The last :meth:`condensed_values`' state: a preconditioner set up from those
+        values keeps it for its reduction and back-substitution, through later
+        evaluations (a lagged preconditioner)."""
+        return self._cstate
 
-    def condensed_back(self, b, x):
+    def _parts(self, state):
+        ne = self.solid.conn.shape[0]
+        state = self._cstate if state is None else state
+        return state[ne * 64:ne * 320].reshape(ne, 4, 64), state[ne * 320:]
+
+    def condensed_reduce(self, b, z, state=None):
+        """z[u dofs] += -K_uH D^-1 b_H (b, z full arrays of the problem's dofs), of the
+        Jacobian of ``state`` (the last by default)."""
+        GP, a = self._parts(state)
+        condensed_reduce(GP, self.solid.dofs, self.hdofs, a, b, z)
+
+    def condensed_back(self, b, x, state=None):
         """x[H dofs] = D^-1 (b_H - K_Hu x_u), from x's displacements."""
-        ne = self.solid.conn.shape[0]
-        condensed_back(self._cjac[ne * 64:].reshape(ne, 4, 64), self.solid.dofs, self.hdofs,
-                       self.solid.W, self.g, self._ca, b, x)
+        GP, a = self._parts(state)
+        condensed_back(GP, self.solid.dofs, self.hdofs, self.solid.W, self.g, a, b, x)
 
-    def condensed_mult(self, x, y):
+    def condensed_mult(self, x, y, state=None):
         """y += (K_uH D^-1 K_Hu x_u + K_uH x_H, K_Hu x_u + D x_H): with the condensed K_uu's
         product, the Jacobian's."""
-        ne = self.solid.conn.shape[0]
-        condensed_mult(self._cjac[ne * 64:].reshape(ne, 4, 64), self.solid.dofs, self.hdofs,
-                       self.solid.W, self.g, self._ca, x, y)
+        GP, a = self._parts(state)
+        condensed_mult(GP, self.solid.dofs, self.hdofs, self.solid.W, self.g, a, x, y)
 
     def viscous_cauchy(self, u):
         """The Prony part of the Cauchy stress at every Gauss point, (ne, 4, 4) as
