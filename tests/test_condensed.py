@@ -95,6 +95,12 @@ def test_the_prony_term_s_own_condensation_is_the_exact_solve():
     ksp.solve(problem._owned(b), x)
     assert ksp.getPC().getPythonContext().st is None
     assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
+    # and back to the operator: S keeps the groups' entries, zero, and solves as before
+    problem._assemble_jacobian(0.0, problem._owned(u), problem._owned(ud), 7.0, J, J)
+    ksp.setOperators(J, J)
+    ksp.solve(problem._owned(b), x)
+    assert ksp.getPC().getPythonContext().st is st
+    assert np.abs(x.getArray() - xd).max() < 1e-11 * np.abs(xd).max()
 
 
 def test_a_preconditioner_set_up_from_one_jacobian_keeps_its_state_through_the_next():

@@ -289,9 +289,11 @@ class CondensedPC:
         # set-up): after one failed Newton solve every later one would fail too
         pc.setFailedReason(PETSc.PC.FailedReason.NOERROR)
         _, P = pc.getOperators()
-        self.vals = vals = np.ascontiguousarray(self._values(P), float)
+        vals = np.ascontiguousarray(self._values(P), float)
         # the operator's values are S's own where a term condenses its block itself
         self.st = structured(self.problem) if P.getType() == PETSc.Mat.Type.PYTHON else None
+        # the generic reduction and back-substitution read the values: kept with the PC
+        self.vals = vals if self.st is None else None
         if self.st is None and not self.s_generic:     # an assembled matrix after all
             try:
                 self.cond.generic()
@@ -301,13 +303,16 @@ class CondensedPC:
             self._make_s(generic=True)
         # the term's state of these values: a later Jacobian does not change this PC
         self.st_state = self.st.term.condensed_state() if self.st is not None else None
-        if self.st is not None:
-            self.svals[:vals.size] = vals
-            self.svals[vals.size:] = 0.0      # the group blocks: in those entries already
-        elif not self.cond.values(vals, self.dinv, self.svals):
-            pc.setFailedReason(PETSc.PC.FailedReason.SETUP_ERROR)    # D not invertible
-            return
-        self.S.setValuesCOO(self.svals, addv=PETSc.InsertMode.INSERT_VALUES)
+        if self.st is not None and vals.size == self.svals.size:
+            self.S.setValuesCOO(vals, addv=PETSc.InsertMode.INSERT_VALUES)
+        else:
+            if self.st is not None:           # S built for the generic products before
+                self.svals[:vals.size] = vals
+                self.svals[vals.size:] = 0.0  # the group blocks: in those entries already
+            elif not self.cond.values(vals, self.dinv, self.svals):
+                pc.setFailedReason(PETSc.PC.FailedReason.SETUP_ERROR)  # D not invertible
+                return
+            self.S.setValuesCOO(self.svals, addv=PETSc.InsertMode.INSERT_VALUES)
         # S is factored here (its symbolic factorisation kept: the same pattern), so that
         # the failure read below is this factorisation's; without setOperators the KSP
         # counts itself set up and refactors only inside the next solve
@@ -392,8 +397,10 @@ class Structured:
             raise NotCondensable("the term's dofs are not the problem's serial ones")
         if not term.can_condense:
             raise NotCondensable("a diagonal entry of the block is not positive")
-        keep = np.concatenate([np.arange(np.asarray(t.rows).size) < (
-            term.n_condensed if t is term else np.inf) for t in problem.terms])
+        # each term's entries; the condensing term's first n_condensed (its K_uu) alone
+        sizes = [np.asarray(t.rows).size for t in problem.terms]
+        keep = np.concatenate([np.arange(m) < term.n_condensed if t is term
+                               else np.ones(m, bool) for t, m in zip(problem.terms, sizes)])
         if problem.constraints is not None:
             keep = np.concatenate([keep, np.ones(problem._rows.size - keep.size, bool)])
         rows, cols = problem.ltog[problem._rows][keep], problem.ltog[problem._cols][keep]
@@ -419,10 +426,9 @@ class Structured:
 
     def reduce(self, b, z, state):
         """z = b_r - A_rq D^-1 b_q (of the Jacobian of the term's ``state``)."""
-        w = self.work
-        w[:] = 0.0
+        w, r = self.work, self.cond.rdofs
+        w[r] = 0.0                            # the reduction adds to displacements only
         self.term.condensed_reduce(b, w, state)
-        r = self.cond.rdofs
         z[:] = b[r] + w[r] * self.free[r]
 
     def back(self, b, xr, x, state):

@@ -273,30 +273,26 @@ class Problem:
             f[c.dofs] = np.where(self._fixed_own, u[c.dofs] - c.values(t), 0.0)
         return f
 
-    def jacobian_values(self, t, u, udot, shift):
+    def jacobian_values(self, t, u, udot, shift, st=None):
         """The COO values of the Jacobian, in an array that is the caller's until it lets
-        go of it (_free_buffer)."""
-        parts = [np.asarray(term.jacobian_values(t, u, udot, shift), float)
-                 for term in self.terms]
-        if self.constraints is not None:
-            parts.append(np.ones(int(self._fixed_own.sum())))
-        vals = np.concatenate(parts, out=self._free_buffer(self._rows.size))
-        if self.constraints is not None:
-            vals[self._fixed_entries] = 0.0
-        return vals
-
-    def condensed_values(self, st, t, u, udot, shift):
-        """The COO values of the Schur complement over the Prony internal variables, on the
-        Jacobian's entries that couple no internal variable (:class:`.condensed.Structured`
-        ``st``): the term that condenses its own block gives its part of S, the others their
-        Jacobians; as :meth:`jacobian_values`, the caller's until it lets go of it."""
-        parts = [np.asarray(term.condensed_values(t, u, udot, shift) if term is st.term
+        go of it (_free_buffer). With ``st`` (a :class:`.condensed.Structured`), those of
+        the Schur complement over the Prony internal variables instead, on the Jacobian's
+        entries that couple no internal variable: the term that condenses its own block
+        gives its part of S, the others their Jacobians."""
+        parts = [np.asarray(term.condensed_values(t, u, udot, shift)
+                            if st is not None and term is st.term
                             else term.jacobian_values(t, u, udot, shift), float)
                  for term in self.terms]
         if self.constraints is not None:
             parts.append(np.ones(int(self._fixed_own.sum())))
-        vals = np.concatenate(parts, out=self._free_buffer(st.n_values))
-        vals[st.fixed_entries] = 0.0
+        if st is None:
+            size, fixed = self._rows.size, (self._fixed_entries if self.constraints
+                                            is not None else None)
+        else:
+            size, fixed = st.n_values, st.fixed_entries
+        vals = np.concatenate(parts, out=self._free_buffer(size))
+        if fixed is not None:
+            vals[fixed] = 0.0
         return vals
 
     def _free_buffer(self, size):
@@ -345,10 +341,8 @@ class Problem:
         u = self.local(U).copy()
         ud = self.local(Udot, self._ldvec) if Udot is not None else np.zeros(self.n_local)
         st = condensed.structured(self) if P.getType() == PETSc.Mat.Type.PYTHON else None
-        if st is not None:    # the Schur complement's values alone (the condensation's)
-            vals = self.condensed_values(st, t, u, ud, shift)
-        else:
-            vals = self.jacobian_values(t, u, ud, shift)[self._mine]
+        # with st, the Schur complement's values alone (the condensation's; serial)
+        vals = self.jacobian_values(t, u, ud, shift, st)[self._mine]
         if P.getType() == PETSc.Mat.Type.PYTHON:     # the values are the matrix
             P.stateIncrease()
         else:

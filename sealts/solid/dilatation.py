@@ -35,9 +35,7 @@ _I = np.array([1.0, 0.0, 0.0, 1.0, 1.0])
 def dilatation(solid, u):
     """(theta (ne,), d theta / d u_e (ne, 8)) of the elements of ``solid`` (a
     :class:`sealts.solid.term.SolidTerm`) at u (its layout)."""
-    ue = np.asarray(u)[solid.dofs]                                 # (ne, 8)
-    f = np.einsum("egij,ej->egi", solid.B, ue) + _I
-    F11, F12, F21, F22, F33 = np.moveaxis(f, -1, 0)
+    F11, F12, F21, F22, F33 = np.moveaxis(_gauss_f(solid, u), -1, 0)
     J = (F11 * F22 - F12 * F21) * F33
     dJ = np.stack([F22 * F33, -F21 * F33, -F12 * F33, F11 * F33, F11 * F22 - F12 * F21], -1)
     V = solid.W.sum(axis=1)
@@ -46,9 +44,14 @@ def dilatation(solid, u):
     return theta, grad
 
 
+def _gauss_f(solid, u):
+    """f = I + B u_e at the Gauss points (ne, ng, 5)."""
+    return np.einsum("egij,ej->egi", solid.B, np.asarray(u)[solid.dofs]) + _I
+
+
 def gauss_J(solid, u):
     """J = det F at the Gauss points (ne, ng) of ``solid`` at u."""
-    f = np.einsum("egij,ej->egi", solid.B, np.asarray(u)[solid.dofs]) + _I
+    f = _gauss_f(solid, u)
     return (f[..., 0] * f[..., 3] - f[..., 1] * f[..., 2]) * f[..., 4]
 
 
