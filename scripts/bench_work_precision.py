@@ -5,7 +5,7 @@ Every O-ring setting is one ``sealts run`` process, timed whole as a user meets 
 cache warm, the mesh cached, nothing of steps 1-2 reused), one after another, nothing else
 of sealts running beside. The defaults are ``configs/oring_stroke.toml`` (0.025 / 0.2 mm
 mesh refined to ``mesh.h_edge`` = 0.0015 mm at the pressurised contact's edges, the film's
-inlets; BDF 3, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 10,000 unknowns
+inlets; BDF 2, stroke rtol 1e-2, fv film, PETSc's LU with AMD ordering below 10,000 unknowns
 and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
 
 * ``rtol``: the stroke's TS tolerance (``-stroke_ts_rtol``) 1e-2, 1e-3, 1e-4;
@@ -22,8 +22,8 @@ and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
 * ``placement``: without ``mesh.h_edge``, 0.025 / 0.2 mm meshed with the grading distances
   of ``edge`` and mirror-symmetric (``mesh.symmetric``), and 0.0125 / 0.1 mm with 0.45 and
   0.55;
-* ``bdf``: the BDF order 1, 2 (PETSc's default) and 4 against sealts' 3
-  (``-stroke_ts_bdf_order``);
+* ``bdf``: the BDF order 1, 3 (the stroke's default 2026-12-03 to 05) and 4 against
+  sealts' 2, PETSc's default (``-stroke_ts_bdf_order``);
 * ``reuse``: the stroke's Jacobian (and its factorisation) reused for a second Newton
   iteration (``-stroke_snes_lag_jacobian 2``);
 * ``theta``: Crank-Nicolson (``-stroke_ts_type theta -stroke_ts_theta_theta 0.5
@@ -34,7 +34,8 @@ and UMFPACK above, sealts/problem/problem.py); each family changes one factor:
   stroke_film_ solves; the default until 2026-12-04);
 * ``cache``: the default with the pressurised-state cache warm (sealts/steps/state_cache.py;
   every other row runs steps 1-2, ``[start] cache = false``);
-* ``before``: BDF 2 with stroke rtol 1e-3 (the defaults until 2026-12-03);
+* (the defaults until 2026-12-03, BDF 2 with stroke rtol 1e-3, are the ``rtol`` family's
+  1e-3 row since BDF 2 is the default again);
 * ``targets``: ``configs/paper_fig14_ve_sq_ff.toml`` (viscoelastic, squeeze, flow factors;
   timed, its leakage not compared; on the cycle's refined mesh, ``mesh.h_edge``, since
   2026-12-05, 2.5 times the Prony variables of the rows before) and the paper's mesh (0.01 / 0.05 mm, without
@@ -190,7 +191,7 @@ def settings(quick):
              scene_text(symmetric=True, h_edge=0.0), [])]
     out += [("placement", f"0.0125 / 0.1 mm, grading {g:g} mm",
              scene_text((0.0125, 0.1), grading=g, h_edge=0.0), []) for g in (0.45, 0.55)]
-    out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 2, 4)]
+    out += [("bdf", f"BDF {k}", d, ["-stroke_ts_bdf_order", str(k)]) for k in (1, 3, 4)]
     out += [("reuse", "Jacobian reused once", d, ["-stroke_snes_lag_jacobian", "2"])]
     out += [("theta", "Crank-Nicolson", d, ["-stroke_ts_type", "theta",
                                             "-stroke_ts_theta_theta", "0.5",
@@ -200,8 +201,6 @@ def settings(quick):
     for o in LU_UMFPACK:
         lu += [o, "umfpack"]
     out += [("lu", "UMFPACK", d, lu)]
-    out += [("before", "BDF 2, rtol 1e-3", d, ["-stroke_ts_bdf_order", "2",
-                                                 "-stroke_ts_rtol", "0.001"])]
     cached = scene_text(state_cache=True).replace("[mesh]\n", '[mesh]\ncache = "{cache}"\n', 1)
     out += [("cache", "state cache warm", cached, [])]
     out += [("targets", "paper_fig14_ve_sq_ff", scene_text(base="paper_fig14_ve_sq_ff.toml"),
@@ -380,19 +379,18 @@ def plot(rows, fit, path, when):
             fams.setdefault(r["family"], []).append(r)
     names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4",
              "mesh": "without mesh.h_edge: mesh (contact / bulk)",
-             "bdf": "BDF order 1 / 2 / 4", "theta": "Crank-Nicolson", "film": "paper film scheme",
+             "bdf": "BDF order 1 / 3 / 4", "theta": "Crank-Nicolson", "film": "paper film scheme",
              "reuse": "the Jacobian reused once (-stroke_snes_lag_jacobian 2)",
              "lu": "UMFPACK in place of PETSc's LU",
              "targets": f"paper mesh without h_edge at the defaults (one of the "
                         f"reference's {len(REF_GRADINGS)} placements)",
-             "before": "BDF 2 and rtol 1e-3 (the defaults before)",
              "layer": "without mesh.h_edge: a 0.1 mm layer at h_contact",
              "plain": "default without -log_view",
              "placement": "without mesh.h_edge: 0.025 / 0.2 or 0.0125 / 0.1 mm, nodes "
                           "placed elsewhere (not joined)",
              "edge": f"the default at {len(PLACEMENT_GRADINGS)} other placements (not "
                      "joined)",
-             "default": f"default ({DEFAULT}, BDF 3, rtol 1e-2)"}
+             "default": f"default ({DEFAULT}, BDF 2, rtol 1e-2)"}
     # one colour per family (the default cycle of ten repeats beyond ten families)
     colours = plt.get_cmap("tab20").colors[::2] + plt.get_cmap("tab20").colors[1::2]
     for i, (fam, rs) in enumerate(fams.items()):
@@ -623,7 +621,7 @@ def measure(work, quick, ref, ref_prof, families=None, first=0, default=True):
     rows = []
     if families is not None and "default" in families:       # --add default,...
         default = True
-    todo = [("default", f"{DEFAULT}, BDF 3, rtol 1e-2", scene_text(), [])] if default else []
+    todo = [("default", f"{DEFAULT}, BDF 2, rtol 1e-2", scene_text(), [])] if default else []
     todo += [t for t in settings(quick) if (families is None or t[0] in families)
              and t[1] != "rtol 1e-02"]
     for k, (fam, label, text, opts) in enumerate(todo, start=first):
@@ -731,12 +729,11 @@ def placement(rows):
 # the summary's wording of a family's rows ("{label}" by default) and its order
 SUMMARY = {"default": "**default** ({label})", "plain": "the default without -log_view",
            "cache": "state cache warm (stroke only)", "rtol": "stroke {label}",
-           "before": "the defaults before 2026-12-03 ({label})",
            "lu": "{label} in place of PETSc's LU", "film": "the {label} for the film",
            "mesh": "without h_edge: mesh {label}", "layer": "without h_edge: {label}",
            "reuse": "{label} (-stroke_snes_lag_jacobian 2)"}
 SUMMARY_ORDER = ("default", "edge", "plain", "cache", "rtol", "bdf", "reuse", "theta",
-                 "before", "film", "lu", "mesh", "placement", "layer", "targets", "prony")
+                 "film", "lu", "mesh", "placement", "layer", "targets", "prony")
 
 
 def summary(rows):
