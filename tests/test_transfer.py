@@ -250,3 +250,32 @@ def test_the_dilatation_correction_moves_past_an_element_turned_over_before_it()
     u, _ = match_dilatation(solid, u0, target, fixed, 36)
     assert np.abs(u[26:28] - known[26:28]).max() < 1e-9
     assert (gauss_J(solid, u)[J0 <= 0.0] >= J0[J0 <= 0.0]).all()
+
+
+def test_a_fold_the_refined_mesh_cannot_carry_stops_the_run_and_says_where(tmp_path):
+    """The shipped scene at 40 MPa with no extrusion gap: on its own 0.025 / 0.2 mm mesh the
+    surface squeezed along the atmosphere-side wall folds onto itself (its self-contact
+    holds), about 0.4 mm above the rod; carried to the mesh refined at the contact's edges,
+    that state is kilonewtons out of balance at single nodes of the fold and Newton's method
+    finds no equilibrium near it (benchmarks/stress.md, twenty-sixth session). The run
+    stops in steps 1-2 with one line naming the fold and its place, exit 3."""
+    import re
+    import subprocess
+    import sys
+
+    from conftest import ROOT, config_text
+    path = tmp_path / "p40.toml"
+    path.write_text(config_text("oring_stroke", fluid={"p_in": 40.0},
+                                output={"plot": False, "progress": False}))
+    r = subprocess.run([sys.executable, "-m", "sealts", "run", str(path), "-o",
+                        str(tmp_path / "out")], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 3, r.stderr
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1, r.stderr
+    line = lines[0]
+    assert line.startswith("solve error: no equilibrium on the refined mesh near the state "
+                           "carried to it"), line
+    assert "surface is folded onto itself there" in line and "the rubber creases" in line
+    wall = re.search(r"([-\d.e]+) mm from the atmosphere-side wall and ([-\d.e]+) mm above", line)
+    assert wall, line
+    assert abs(float(wall.group(1))) < 0.05 and 0.2 < float(wall.group(2)) < 0.7

@@ -229,8 +229,8 @@ def _refine_passes(scene, comm, say, options, cache):
         except SolveError as e:          # the scene's own mesh went through: say so
             raise SolveError(
                 f"{e} (on the mesh refined to mesh.h_edge = {m.h_edge:g} mm at the contact's "
-                "edges, from steps 1-2 on the scene's own mesh: without mesh.h_edge, or "
-                "with a larger one, this scene runs)") from None
+                "edges, from steps 1-2 on the scene's own mesh, which went through: without "
+                "mesh.h_edge the run goes on on that mesh)") from None
     if not len(points):
         say("mesh.h_edge: no contact edge away from the groove's walls after steps 1-2; "
             "the mesh is not refined", force=True)

@@ -18,6 +18,14 @@ its discretisation to settle. The seal also keeps the roll it found on the scene
 (steps 1-2's frictionless walls hold it weakly, and a repeated path can settle it 0.13 mm
 elsewhere), and the pseudo-time runs of a second mount and pressurisation are saved.
 
+Where neither Newton's method from the carried state nor the stabilised driver finds an
+equilibrium, the run stops and names the place of the carried state's largest
+out-of-balance force and, where the scene's own mesh's surface is folded onto itself there,
+the fold (:func:`no_equilibrium`): the paper's O-ring at 40 MPa with no extrusion gap creases
+along the atmosphere-side wall, at the scale of the mesh, and the refined mesh has no
+equilibrium near the coarse mesh's fold (releasing the out-of-balance force in steps,
+F(u) = (1 - lambda) F(u_carried), got no further than lambda = 0.016).
+
 Where a static solve of the settling fails, the settling stops and the last equilibrium
 stands, with a warning (``settle_front(..., keep=True)``): at 20-30 MPa the pressure-side
 front's next move on micrometre edges, where the wetted nodes next to the contact touch the
@@ -67,7 +75,11 @@ class Transfer(Step):
         try:
             eq.u = static(model, extra, u, t, eq.counters, **NEWTON)
         except SolveError:         # not near enough: the stabilised way (settle_front's)
-            eq = quasi_static(model, extra, u, PseudoTime.window(t), dt)
+            try:
+                eq = quasi_static(model, extra, u, PseudoTime.window(t), dt)
+            except SolveError as e:
+                raise SolveError(no_equilibrium(src, model, extra, u, t) + " (the stabilised "
+                                 f"driver from it: {str(e).split(':')[0]})") from None
         label = f"carried to the refined mesh, pseudo-time {t:g}"
         if load is None:
             state.counters.add(eq.counters)
@@ -85,6 +97,42 @@ class Transfer(Step):
                 "by p_in; in a stroke the film carries the fluid on the rod side)")
         settled(state, eq, load, t, moved, updates, src.results.get("mounted", {}),
                 f"pressurised to {state.scene.fluid.p_in:g} MPa, " + label, hint)
+
+
+# a fold of the scene's own mesh this near (reference, mm) the largest out-of-balance force
+# is named as its cause
+NEAR_FOLD = 0.1
+
+
+def no_equilibrium(src, model, extra, u, t):
+    """Why the refined mesh found no equilibrium from the carried state ``u``, in words:
+    where the state is out of balance the most, and whether the scene's own mesh's surface
+    is folded onto itself (its self-contact holds) there."""
+    f = np.zeros(model.n)
+    for term in model.local_terms(model.walls() + list(extra)):
+        term.add_residual(t, u, np.zeros(model.n), f)
+    un = np.asarray(u)[model.udofs]
+    force = np.hypot(f[model.udofs[:, 0]], f[model.udofs[:, 1]])
+    k = int(np.argmax(force))
+    X, x = model.mesh.X[k], model.mesh.X[k] + un[k]
+    za, zb = model.groove.z_walls(t)
+    wall, side = min((x[1] - za, "pressure-side"), (zb - x[1], "atmosphere-side"))
+    where = (f"{force[k]:.4g} N at r = {X[0]:.4g}, z = {X[1]:.4g} mm (undeformed), "
+             f"{wall:.3g} mm from the {side} wall and {x[0] - model.rod_radius(t):.3g} mm "
+             "above the rod")
+    fold = ""
+    sc = src.model.self_contact
+    if sc is not None:
+        q, F = sc.forces(np.asarray(src.u))
+        near = np.hypot(*(sc.Xi[q] - X).T) < NEAR_FOLD
+        if near.any() and np.abs(F[near]).max() > 0.0:
+            fold = ("; the scene's own mesh's surface is folded onto itself there (its "
+                    f"self-contact holds {near.sum()} pair(s) of nodes within {NEAR_FOLD:g} "
+                    "mm): the rubber creases, compressed "
+                    "along the surface, at the scale of the mesh, and the refined mesh's "
+                    "finer elements fold otherwise")
+    return ("no equilibrium on the refined mesh near the state carried to it: Newton's "
+            f"method from it fails; its largest out-of-balance force is {where}{fold}")
 
 
 def carried(old, u_old, new):
