@@ -51,6 +51,21 @@ output stops 0.057 % (0.0008 %), initial dt doubled 0.006 % (0.0000 %). The conv
 answers of the two histories differ by 0.02 % in the net leakage and 0.07 % in the
 instroke's peak friction.
 
+With BDF 2 again, the stroke's default since 2026-12-05 (twenty-sixth session; the friction
+history as TS state, the rest as above; scripts/stroke_sensitivity.py --rtol 1e-2 and
+1e-4):
+
+    rtol   net       out      in        work      F out    F in     accepted rejected
+    1e-2  10.20113  76.1184  -65.9173  58193.4  67.4203  63.1487      327       24
+    1e-3  10.20125  76.1503  -65.9490  58241.3  67.4164  63.2353      713       50
+    1e-4  10.20143  76.1570  -65.9555  58251.2  67.4171  63.2514     1589      147
+    1e-5  10.20145  76.1585  -65.9571  58253.2  67.4168  63.2545     3386      206
+
+and its variants at 1e-2 (1e-4): rtol x (1 + 1e-6) 0.0000 % (0.002 %), terms reversed
+0.0000 % (0.001 %), no output stops 0.009 % (0.0006 %), initial dt doubled 0.022 %
+(0.0003 %). The net leakage at 1e-2 is 0.003 % from 1e-5's, the instroke's peak friction
+0.17 %.
+
 Bounds: 0.05 % for the round-off variants, 0.5 % for the step sequence at the default rtol
 and less at 1e-4; every quantity within 0.5 % of the rtol 1e-5 run at the default, and
 monotone over the sweep beyond a noise floor: the net leakage's time error is of the order
