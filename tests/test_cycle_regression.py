@@ -130,6 +130,8 @@ def test_cycle_leakage_and_peak_friction(cycle):
     # below PETSC_LU_BELOW: PETSc's LU with AMD, twice as fast as UMFPACK on this Jacobian
     # (docs/petsc-build.md); no zero pivot made it fall back to UMFPACK on this cycle
     assert cycle[0]["provenance"]["solvers"]["stroke_"]["pc_factor_mat_solver_type"] == "petsc"
+    # the stroke's BDF order (StrokeProblem's default; the pins below are its numbers)
+    assert cycle[0]["provenance"]["solvers"]["stroke_"]["ts_bdf_order"] == 2
     assert st["leakage_out"] == pytest.approx(15.97, rel=1e-2)
     assert st["outstroke_transport"] == pytest.approx(85.15, rel=3e-3)
     assert st["instroke_transport"] == pytest.approx(-69.18, rel=3e-3)

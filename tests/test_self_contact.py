@@ -94,6 +94,9 @@ def test_two_nodes_pushed_together_settle_at_the_penalty_distance():
     g = -dl * np.log(np.expm1(P / (A * k * dl)))
     assert 1.0 + u[9] == pytest.approx(d0 + g, abs=1e-12)
     assert g < 0.0                                    # pressed within the contact distance
+    # the surface is folded there (closed: this pair alone), and nowhere undeformed
+    assert sc.closed(u).tolist() == [X[sc.i[pair[0]]].tolist()]
+    assert sc.closed(np.zeros(12)).size == 0
 
 
 @pytest.mark.parametrize("shape", ["oring", "rectangle"])

@@ -95,6 +95,12 @@ class SelfContact(Term):
         near = np.flatnonzero(d < self.d0 + CUTOFF * self.delta)
         return near, dx[near], d[near]
 
+    def closed(self, u):
+        """The reference positions (k, 2) of the first node of each pair closer than its
+        contact distance d0 at u: where the surface is folded onto itself."""
+        q, _, d = self._pairs(u)
+        return self.Xi[q[d < self.d0[q]]]
+
     def forces(self, u):
         """The pairs in contact and the force on their node i (N, (pairs, 2); -F on j)."""
         q, dx, d = self._pairs(u)

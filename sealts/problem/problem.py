@@ -444,6 +444,8 @@ class Problem:
         """Record the solver this problem set up (SOLVERS, for the summary), with the time
         UMFPACK took over from PETSc's LU if it did."""
         SOLVERS[self.prefix or ""] = out = _solver_in_force(snes, ts)
+        if ts is not None and ts.getType() == PETSc.TS.Type.BDF:
+            out["ts_bdf_order"] = getattr(self, "_bdf_order", None)
         if self.lu_fallback is not None:
             out["pc_factor_mat_solver_type"] = (
                 f"umfpack (from t = {self.lu_fallback:.6g}: {self.lu_fallback_why})")
@@ -601,6 +603,8 @@ class Problem:
             ts.setMonitor(monitor)
         try:
             ts.setFromOptions()
+            # BDF's order in force (petsc4py has no getter; the default is dropped next)
+            self._bdf_order = PETSc.Options(self.prefix).getInt("ts_bdf_order", 2)
         finally:
             self._drop_defaults()
         if self.update_test is not None:   # after setFromOptions: the tolerances in force

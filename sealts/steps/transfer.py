@@ -78,8 +78,9 @@ class Transfer(Step):
             try:
                 eq = quasi_static(model, extra, u, PseudoTime.window(t), dt)
             except SolveError as e:
+                why = str(e).splitlines()[0].split("; try a smaller")[0]
                 raise SolveError(no_equilibrium(src, model, extra, u, t) + " (the stabilised "
-                                 f"driver from it: {str(e).split(':')[0]})") from None
+                                 f"driver from it: {why})") from None
         label = f"carried to the refined mesh, pseudo-time {t:g}"
         if load is None:
             state.counters.add(eq.counters)
@@ -113,6 +114,9 @@ def no_equilibrium(src, model, extra, u, t):
         term.add_residual(t, u, np.zeros(model.n), f)
     un = np.asarray(u)[model.udofs]
     force = np.hypot(f[model.udofs[:, 0]], f[model.udofs[:, 1]])
+    if not np.isfinite(force).all():     # an element of the carried state inverted
+        return ("no equilibrium on the refined mesh near the state carried to it: "
+                + (model.solid.nonfinite(t, u) or "its residual is not finite"))
     k = int(np.argmax(force))
     X, x = model.mesh.X[k], model.mesh.X[k] + un[k]
     za, zb = model.groove.z_walls(t)
@@ -123,9 +127,8 @@ def no_equilibrium(src, model, extra, u, t):
     fold = ""
     sc = src.model.self_contact
     if sc is not None:
-        q, F = sc.forces(np.asarray(src.u))
-        near = np.hypot(*(sc.Xi[q] - X).T) < NEAR_FOLD
-        if near.any() and np.abs(F[near]).max() > 0.0:
+        near = np.hypot(*(sc.closed(np.asarray(src.u)) - X).T) < NEAR_FOLD
+        if near.any():
             fold = ("; the scene's own mesh's surface is folded onto itself there (its "
                     f"self-contact holds {near.sum()} pair(s) of nodes within {NEAR_FOLD:g} "
                     "mm): the rubber creases, compressed "
