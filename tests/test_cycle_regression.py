@@ -54,7 +54,7 @@ inlets (``mesh.h_edge = 0.0015``, the default since 2026-12-05; steps 1-2 carrie
 refined mesh), 8,199 unknowns (one run, 2026-12-05; the benchmark's rows of the same
 setting at grading distances 0.4, 0.45, 0.55, 0.6 mm beside it):
 
-    0.025  / 0.2     1e-2    8,199     378   15.97   85.19  -69.22   67.44 / 63.01
+    0.025  / 0.2     1e-2    8,199     385   15.97   85.19  -69.22   67.44 / 63.01
     (grading 0.4 - 0.6 mm)                  16.11 - 16.27
 
 and with BDF 2, the stroke's default since (the same day; BDF 3 before, the rows since
@@ -89,9 +89,9 @@ friction 67.3-67.5 / 62.9-63.2 on every one.
   nodes"; benchmarks/work_precision.md): the value pinned here is one of them, so the
   physics is known to about 2 %, and the pins below hold this mesh's computation.
 * Time: at rtol 1e-3 the net leakage is 0.0003 mm^3 (0.002 %) and the transports 0.01 %
-  from rtol 1e-4 (0.025 / 0.2 without the refinement); on the refined default 15.9708,
-  15.9706, 15.9694 mm^3 at rtol 1e-2, 1e-3, 1e-4 (benchmarks/work_precision.md,
-  2026-12-05); on the coarse mesh the whole sweep 1e-2 .. 1e-5 moves the net leakage by
+  from rtol 1e-4 (0.025 / 0.2 without the refinement); on the refined default 15.9726,
+  15.9702, 15.9701 mm^3 at rtol 1e-2, 1e-3, 1e-4 with BDF 2 (benchmarks/work_precision.md,
+  2026-12-05 21:08; with BDF 3 15.9708, 15.9706, 15.9694); on the coarse mesh the whole sweep 1e-2 .. 1e-5 moves the net leakage by
   0.03 % (tests/test_stroke_accuracy.py).
 
 The tolerances below are therefore not the error of the result (above) but what a change of

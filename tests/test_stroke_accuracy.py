@@ -52,8 +52,8 @@ answers of the two histories differ by 0.02 % in the net leakage and 0.07 % in t
 instroke's peak friction.
 
 With BDF 2 again, the stroke's default since 2026-12-05 (twenty-sixth session; the friction
-history as TS state, the rest as above; scripts/stroke_sensitivity.py --rtol 1e-2 and
-1e-4):
+history as TS state, the rest as above; benchmarks/stroke_sensitivity.md, its last
+section):
 
     rtol   net       out      in        work      F out    F in     accepted rejected
     1e-2  10.20113  76.1184  -65.9173  58193.4  67.4203  63.1487      327       24
