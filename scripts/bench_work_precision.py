@@ -379,7 +379,9 @@ def plot(rows, fit, path, when):
             fams.setdefault(r["family"], []).append(r)
     names = {"cache": "default, state cache warm", "rtol": "stroke rtol 1e-3 / 1e-4",
              "mesh": "without mesh.h_edge: mesh (contact / bulk)",
-             "bdf": "BDF order 1 / 3 / 4", "theta": "Crank-Nicolson", "film": "paper film scheme",
+             "bdf": "BDF order " + " / ".join(r["label"].split()[-1] for r in
+                                              fams.get("bdf", [])),
+             "theta": "Crank-Nicolson", "film": "paper film scheme",
              "reuse": "the Jacobian reused once (-stroke_snes_lag_jacobian 2)",
              "lu": "UMFPACK in place of PETSc's LU",
              "targets": f"paper mesh without h_edge at the defaults (one of the "
@@ -390,7 +392,7 @@ def plot(rows, fit, path, when):
                           "placed elsewhere (not joined)",
              "edge": f"the default at {len(PLACEMENT_GRADINGS)} other placements (not "
                      "joined)",
-             "default": f"default ({DEFAULT}, BDF 2, rtol 1e-2)"}
+             "default": f"default ({default['label']})" if default else "default"}
     # one colour per family (the default cycle of ten repeats beyond ten families)
     colours = plt.get_cmap("tab20").colors[::2] + plt.get_cmap("tab20").colors[1::2]
     for i, (fam, rs) in enumerate(fams.items()):
