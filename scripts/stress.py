@@ -2,8 +2,10 @@
 
 Runs ``sealts run`` on variants of ``configs/oring_stroke.toml`` (the paper's O-ring, one
 10 s sine cycle at 500 mm/s) one factor at a time, each in its own process with a time
-limit, and prints one table row per case: finished or the error (the failing step and the
-solver's reason, from ``summary.json``), accepted and rejected stroke steps, Newton
+limit, and prints one table row per case: finished, stopped with a physical cause
+(extrusion, blow-by, a fold on the rod, a crease the refined mesh cannot carry:
+``summary.json``'s "stopped" and its cause) or FAILED (a numerical or model failure), with
+the step and the reason from ``summary.json``; accepted and rejected stroke steps, Newton
 iterations and failed Newton solves (each retried with a smaller step), min h (um,
 negative: the seal's mean plane past the rod's), the groove walls' largest penalty
 penetration (um), net leakage, the film's balance (V_in - V_out minus the change of the
@@ -204,9 +206,13 @@ def run_case(name, overrides, mesh, timeout, work):
         p.communicate()
         rc, err = None, [f"time limit {timeout:g} s"]
     wall = time.perf_counter() - t0
-    row = {"case": name, "status": "finished" if rc == 0 else "FAILED", "wall s": wall}
     summ = d / "out" / "summary.json"
     s = json.loads(summ.read_text()) if summ.exists() else {}
+    # a physical stop (extrusion, blow-by, a fold) is a result; anything else not finished
+    # is a failure
+    status = ("finished" if rc == 0 else f"stopped: {s['cause']}"
+              if rc is not None and s.get("status") == "stopped" else "FAILED")
+    row = {"case": name, "status": status, "wall s": wall}
     st = s.get("stroke", s.get("hold", {}))
     if rc is None:       # stopped at the time limit: how far, and at what pace
         last = _last_row(d / "out" / "series.csv")

@@ -273,10 +273,13 @@ def main(argv=None):
               "(summary.json: status \"interrupted\")", file=sys.stderr)
         return interrupt.EXIT_CODES.get(e.signal, 130)
     except Exception as e:  # solver failures are reported, not dumped
-        from .core import SolveError
+        from .core import PhysicalStop, SolveError
         if isinstance(e, SolveError):
             _quiet_petsc()
-            print(f"solve error: {e}", file=sys.stderr)
+            # a physical stop is a result (summary.json: "stopped" and its cause), a solve
+            # error a failure; both end the run with exit 3
+            what = f"physical stop ({e.cause})" if isinstance(e, PhysicalStop) else "solve error"
+            print(f"{what}: {e}", file=sys.stderr)
             return 3
         if type(e).__module__.startswith("petsc4py"):   # a bad option value, mostly
             _quiet_petsc()

@@ -17,6 +17,27 @@ class SolveError(RuntimeError):
     state that left the model's range); its message is one line naming the cause."""
 
 
+class PhysicalStop(SolveError):
+    """A run that stops for a physical reason it names, a result and not a numerical
+    failure: ``cause`` one of "extrusion" (the seal flows into the extrusion gap),
+    "blow-by" (the fluid passes the seal), "fold" (the rod side turns back along the rod)
+    and "crease" (a fold of the surface the refined mesh cannot carry). The summary says
+    ``"status": "stopped"`` with the cause; the table of scripts/stress.py "stopped"."""
+
+    def __init__(self, cause, message):
+        super().__init__(message)
+        self.cause = cause
+
+    def __reduce__(self):         # pickled whole (rank 0's verdict broadcast to the others)
+        return PhysicalStop, (self.cause, str(self))
+
+
+def reworded(e, message):
+    """A SolveError of the same kind as ``e`` (a PhysicalStop keeps its cause) with
+    another message: a caller that adds where it happened."""
+    return PhysicalStop(e.cause, message) if isinstance(e, PhysicalStop) else SolveError(message)
+
+
 class StepTooSmall(SolveError):
     """TS's steps stuck at their minimum size: the solution runs away faster than any step
     (:meth:`sealts.problem.Problem._check_min_step`); ``t`` where."""

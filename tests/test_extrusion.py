@@ -156,11 +156,13 @@ def test_a_seal_pressed_into_the_gap_stops_naming_extrusion(tmp_path):
                 stroke={"velocity": "none"})
     assert r.returncode == 3 and "Traceback" not in r.stderr
     line, = r.stderr.strip().splitlines()
-    assert line.startswith("solve error: extrusion: at t = ") and "bore r = 25.1 mm" in line
+    assert line.startswith("physical stop (extrusion): extrusion: at t = ")
+    assert "bore r = 25.1 mm" in line
     p = float(line.split("p = ")[1].split(" MPa")[0])
     assert 3.0 < p < 15.0
-    assert s["status"] == "failed" and s["error"].startswith("pressurise: SolveError: "
-                                                            "extrusion")
+    # a physical stop, a result: "stopped" with its cause, not "failed"
+    assert s["status"] == "stopped" and s["cause"] == "extrusion"
+    assert s["error"].startswith("pressurise: PhysicalStop: extrusion")
 
 
 def test_a_sealing_stroke_reports_its_extrusion(tmp_path):

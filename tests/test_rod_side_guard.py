@@ -8,7 +8,7 @@ import pytest
 
 from sealts.contact.rod_side import RodSide
 from sealts.contact.rod_side_guard import RodSideGuard
-from sealts.core import SolveError
+from sealts.core import PhysicalStop, SolveError
 
 
 def chain(n=6, length=0.05):
@@ -27,6 +27,7 @@ def test_a_fold_of_the_rod_side_stops_the_run_and_says_where():
         guard.accepted(1.5, u)
     assert "at t = 1.5 the rod side folds over between nodes 2 and 3" in str(e.value)
     assert "the film (a function of the axial position) cannot follow" in str(e.value)
+    assert isinstance(e.value, PhysicalStop) and e.value.cause == "fold"   # a result
     with pytest.raises(SolveError) as e:                # with the walls: which one, how far
         RodSideGuard(side, depth=7e-4, walls=lambda t: (-1.0, 0.3)).accepted(1.5, u)
     assert "um from the rod, 0.2 mm from the groove wall at y = 0.3 mm)" in str(e.value)
@@ -67,8 +68,9 @@ def test_a_crease_up_the_wall_stops_without_self_contact_and_not_with_it():
         u[side.ur[k]] = dr                              # up the wall, radially ...
         u[side.uz[k]] = 0.15 - side.Z[k]                # ... its nodes all at z = 0.15
     u[side.uz[5]] -= 0.006                              # node 5 6 um back along z ...
-    with pytest.raises(SolveError, match='seal.self_contact = "on" closes the crease'):
+    with pytest.raises(SolveError, match='seal.self_contact = "on" closes the crease') as e:
         RodSideGuard(side, depth=7e-4).accepted(0.0, u)
+    assert not isinstance(e.value, PhysicalStop)      # the model's setting, not physics
     RodSideGuard(side, depth=7e-4, creases=True).accepted(0.0, u)
     u[side.ur[4]] = u[side.ur[5]] = 0.0                 # ... the same turn-back on the rod
     with pytest.raises(SolveError, match="cannot follow"):
@@ -183,11 +185,12 @@ def test_a_seal_clear_of_the_rod_blows_by(tmp_path):
                         str(tmp_path / "out")], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 3, r.stderr
     lines = r.stderr.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("solve error: blow-by: the pressure-"
-                                                   "penetration front reached the atmosphere")
+    assert len(lines) == 1 and lines[0].startswith("physical stop (blow-by): blow-by: the "
+                                                   "pressure-penetration front reached the "
+                                                   "atmosphere")
     summary = Results(tmp_path / "out").summary
-    assert summary["status"] == "failed"
-    assert summary["error"].startswith("pressurise: SolveError: blow-by")
+    assert summary["status"] == "stopped" and summary["cause"] == "blow-by"
+    assert summary["error"].startswith("pressurise: PhysicalStop: blow-by")
     assert summary["results"]["contact_force_total"] == 0.0      # the mount never touched
 
 
@@ -211,3 +214,20 @@ def test_a_sharp_cornered_ring_is_told_to_round_its_corners(corner_radius):
         guard.accepted(2.0, u)                   # pseudo-time 2: rod and groove final
     assert f"node {side.off[k]} off the rod side is 2 um inside the rod" in str(e.value)
     assert ("seal.corner_radius = 0.1 mm" in str(e.value)) == (corner_radius == 0.0)
+
+
+def test_a_physical_stop_keeps_its_cause_through_pickling_and_rewording():
+    """Rank 0's verdict on steps 1-2 is broadcast to the other ranks (pickled), and a caller
+    that adds where it happened rewords it: either way it stays a physical stop with its
+    cause, and a plain solve error stays plain."""
+    import pickle
+
+    from sealts.core import reworded
+    e = pickle.loads(pickle.dumps(PhysicalStop("extrusion", "extrusion: at t = 2")))
+    assert isinstance(e, PhysicalStop) and e.cause == "extrusion"
+    assert str(e) == "extrusion: at t = 2"
+    again = reworded(e, f"{e} (on the refined mesh)")
+    assert isinstance(again, PhysicalStop) and again.cause == "extrusion"
+    assert str(again) == "extrusion: at t = 2 (on the refined mesh)"
+    plain = reworded(SolveError("diverged"), "diverged (there)")
+    assert type(plain) is SolveError and str(plain) == "diverged (there)"

@@ -273,9 +273,12 @@ def test_a_fold_the_refined_mesh_cannot_carry_stops_the_run_and_says_where(tmp_p
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1, r.stderr
     line = lines[0]
-    assert line.startswith("solve error: no equilibrium on the refined mesh near the state "
-                           "carried to it"), line
+    assert line.startswith("physical stop (crease): no equilibrium on the refined mesh near "
+                           "the state carried to it"), line
     assert "surface is folded onto itself there" in line and "the rubber creases" in line
     wall = re.search(r"([-\d.e]+) mm from the atmosphere-side wall and ([-\d.e]+) mm above", line)
     assert wall, line
     assert abs(float(wall.group(1))) < 0.05 and 0.2 < float(wall.group(2)) < 0.7
+    from sealts.io.results import Results
+    summary = Results(tmp_path / "out").summary
+    assert summary["status"] == "stopped" and summary["cause"] == "crease"

@@ -1,5 +1,5 @@
-"""The extrusion guard: a run ends with a one-line SolveError when the seal has flowed into
-the extrusion gap (``groove.clearance``) by more than ``groove.extrusion_limit``.
+"""The extrusion guard: a run ends with a one-line PhysicalStop ("extrusion") when the seal
+has flowed into the extrusion gap (``groove.clearance``) by more than ``groove.extrusion_limit``.
 
 With a clearance the groove's side walls end at the bore r_rod + clearance
 (:class:`sealts.contact.rigid.GrooveContact`, its ``edge``); seal material that passes a
@@ -20,7 +20,7 @@ rod-side guard.
 """
 import numpy as np
 
-from ..core import SolveError, Term
+from ..core import PhysicalStop, Term
 from .rod_side_guard import fold
 
 
@@ -50,18 +50,20 @@ class ExtrusionGuard(Term):
         gap = (f"(bore r = {self.groove.edge[0]:.4g} mm, rod r = {self.side.r_rod(t):.4g} "
                "mm)")
         if e > self.limit:
-            raise SolveError(f"extrusion: at t = {t:.6g}{at} node {node} has flowed "
-                             f"{e:.3g} mm past the groove's side wall into the extrusion gap "
-                             f"{gap}; groove.extrusion_limit = {self.limit:g} mm")
+            raise PhysicalStop("extrusion",
+                               f"extrusion: at t = {t:.6g}{at} node {node} has flowed "
+                               f"{e:.3g} mm past the groove's side wall into the extrusion gap "
+                               f"{gap}; groove.extrusion_limit = {self.limit:g} mm")
         k = fold(self.side, u, back=None)
         if k >= 0 and self._past_wall(t, u, k):
             y = self.side.y(u)
-            raise SolveError(f"extrusion: at t = {t:.6g}{at} the seal flows into the "
-                             f"extrusion gap {gap}: its rod side turns back along the bore "
-                             f"between nodes {self.side.chain[k]} and "
-                             f"{self.side.chain[k + 1]} (y = {y[k]:.4f} and "
-                             f"{y[k + 1]:.4f} mm), {e:.3g} mm past the wall; the film along "
-                             "the rod cannot follow a tongue")
+            raise PhysicalStop("extrusion",
+                               f"extrusion: at t = {t:.6g}{at} the seal flows into the "
+                               f"extrusion gap {gap}: its rod side turns back along the bore "
+                               f"between nodes {self.side.chain[k]} and "
+                               f"{self.side.chain[k + 1]} (y = {y[k]:.4f} and "
+                               f"{y[k + 1]:.4f} mm), {e:.3g} mm past the wall; the film along "
+                               "the rod cannot follow a tongue")
 
     def _past_wall(self, t, u, k):
         """Whether the turned-over element lies at a wall's plane, within the edge."""

@@ -27,7 +27,7 @@ against a wall sit at one axial position to round-off, far above that bound.
 """
 import numpy as np
 
-from ..core import SolveError, Term
+from ..core import PhysicalStop, SolveError, Term
 
 FOLD = 0.1      # an element inverted by a tenth of its reference length ...
 BACK = 0.5      # ... and pointing backwards along the rod (within 60 degrees of it)
@@ -96,13 +96,15 @@ class RodSideGuard(Term):
             return
         y, h = side.y(u), side.gap(t, u) * 1e3
         a, b = side.chain[k], side.chain[k + 1]
-        if min(h[k], h[k + 1]) <= FILM_GAP * 1e3:
+        on_rod = min(h[k], h[k + 1]) <= FILM_GAP * 1e3
+        if on_rod:        # a physical stop: the quasi-static seal has no state past it
             why = ("the seal's surface turns back along the rod, where the film (a function "
                    "of the axial position) cannot follow it" + self.fold_hint)
-        else:
+        else:             # the model's: its self-contact is off
             why = ("the seal's surface creases and its faces would pass through each other: "
                    "seal.self_contact = \"on\" closes the crease on itself")
-        raise SolveError(f"at t = {t:.6g} the rod side folds over between nodes {a} and {b} "
+        kind = (lambda m: PhysicalStop("fold", m)) if on_rod else SolveError
+        raise kind(f"at t = {t:.6g} the rod side folds over between nodes {a} and {b} "
                          f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm, {h[k]:.3g} and "
                          f"{h[k + 1]:.3g} um from the rod{self._wall_note(t, y[k])}): {why}")
 

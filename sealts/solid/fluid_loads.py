@@ -20,7 +20,7 @@ step asks of a load (``pressure`` is p_in's, ``wet``, ``fluid_share``, ``forces`
 """
 import numpy as np
 
-from ..core import SolveError, Term
+from ..core import PhysicalStop, Term
 
 
 class FluidLoads(Term):
@@ -106,10 +106,11 @@ class FluidLoads(Term):
         both = np.sum([f.wet > 0.0 for f in self.loads], axis=0) > 1
         if both.any():
             k = int(np.nonzero(both)[0][0])
-            raise SolveError(f"blow-by: the fluids of both sides meet on the edge of nodes "
-                             f"{self.edges[k, 0]}-{self.edges[k, 1]} at p_in = "
-                             f"{self.pressure(t):.4g} MPa, t = {t:.6g}: the seal no longer "
-                             "seals")
+            raise PhysicalStop("blow-by",
+                               "blow-by: the fluids of both sides meet on the edge of nodes "
+                               f"{self.edges[k, 0]}-{self.edges[k, 1]} at p_in = "
+                               f"{self.pressure(t):.4g} MPa, t = {t:.6g}: the seal no longer "
+                               "seals")
 
     def rebuilt(self, pressures=None, udofs=None, dry=None):
         pressures = self.pressures if pressures is None else pressures

@@ -44,7 +44,7 @@ import copy
 import numpy as np
 
 from ..mesh.layout import vertex_dofs
-from ..core import SolveError, Term
+from ..core import PhysicalStop, Term
 
 
 def boundary_loop(conn):
@@ -93,17 +93,18 @@ class PressureLoad(Term):
         self.exit = np.array([tuple(sorted(e)) in keys for e in self.edges.tolist()], bool)
 
     def check_blow_by(self, t):
-        """SolveError if the wetted set reaches the atmosphere side: blow-by."""
+        """PhysicalStop ("blow-by") if the wetted set reaches the atmosphere side."""
         exit_ = getattr(self, "exit", None)
         if exit_ is None or not exit_.any():
             return
         wet = self.wet[exit_]
         if wet.max() > 0.0:
             k = int(np.nonzero(exit_)[0][np.argmax(wet)])
-            raise SolveError(f"blow-by: the pressure-penetration front reached the atmosphere "
-                             f"side (edge of nodes {self.edges[k, 0]}-{self.edges[k, 1]}) at "
-                             f"p = {self.pressure(t):.4g} MPa, t = {t:.6g}: the seal no longer "
-                             "seals")
+            raise PhysicalStop("blow-by",
+                               "blow-by: the pressure-penetration front reached the atmosphere "
+                               f"side (edge of nodes {self.edges[k, 0]}-{self.edges[k, 1]}) at "
+                               f"p = {self.pressure(t):.4g} MPa, t = {t:.6g}: the seal no "
+                               "longer seals")
 
     @property
     def wet(self):

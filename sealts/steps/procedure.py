@@ -13,7 +13,7 @@ in this package, imported here and put in ``steps_for``.
 """
 import time
 
-from ..core import SolveError
+from ..core import PhysicalStop, SolveError, reworded
 from ..interrupt import Interrupted
 from ..io.fields import write_fields
 from ..io.progress import Progress
@@ -192,8 +192,8 @@ def _refine_passes(scene, comm, say, options, cache):
         st = run_steps(steps_1_2(base, entry),
                        RunState(base, model_from_scene(base, comm), profiles, say, comm))
     except SolveError as e:          # where: before any refinement
-        raise SolveError(f"{e} (on the scene's own mesh, which mesh.h_edge refines only "
-                         "after steps 1-2: the same without it)") from None
+        raise reworded(e, f"{e} (on the scene's own mesh, which mesh.h_edge refines only "
+                       "after steps 1-2: the same without it)") from None
     # the scene's own mesh's profiles in a file of their own: at the same pseudo-time as
     # the refined mesh's, they would be two blocks of one t in profiles.csv
     profiles.calls = [(t, p, name.replace(".csv", "_scene_mesh.csv"),
@@ -227,7 +227,7 @@ def _refine_passes(scene, comm, say, options, cache):
         try:
             st = run_steps([Transfer(st)], nxt)
         except SolveError as e:          # the scene's own mesh went through: say so
-            raise SolveError(
+            raise reworded(e,
                 f"{e} (on the mesh refined to mesh.h_edge = {m.h_edge:g} mm at the contact's "
                 "edges, from steps 1-2 on the scene's own mesh, which went through: without "
                 "mesh.h_edge the run goes on on that mesh)") from None
@@ -272,7 +272,7 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
         if scene.model == "seal" and scene.mesh.h_edge > 0.0 and writer.root:
             # steps 1-2 on the scene's mesh or a refined one (mesh.h_edge) failed: the run
             # says so
-            writer.summary({"status": "interrupted" if isinstance(e, Interrupted) else "failed",
+            writer.summary({"status": _status(e), **_cause(e),
                             "error": f"steps 1-2 (mesh.h_edge's refinement passes): "
                                      f"{type(e).__name__}: {e}".splitlines()[0],
                             "scene": scene.name, "source": scene.source,
@@ -284,7 +284,7 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
         state.say(f"mesh: {model.mesh.X.shape[0]} nodes, {model.mesh.conn.shape[0]} quads, "
                   f"{model.n} unknowns" + (f"; cells per rank {cells}" if len(cells) > 1
                                            else ""), force=True)
-    def finish(status, error=None):
+    def finish(status, error=None, cause=None):
         try:
             body = _summary(state, command)
         except Exception:        # a run that failed before it had a state to summarise
@@ -292,7 +292,8 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
                 raise
             body = {"scene": scene.name, "source": scene.source,
                     "analysis": " + ".join(state.done)}
-        summary = {"status": status, **({"error": error} if error else {}), **body}
+        summary = {"status": status, **({"cause": cause} if cause else {}),
+                   **({"error": error} if error else {}), **body}
         if status != "finished" and writer.root and writer.last_row is not None:
             summary["t_reached"] = writer.last_row.get("t")     # the last accepted step
         summary["wall_time_s"] = time.perf_counter() - t_wall
@@ -305,19 +306,34 @@ def run_scene(scene, writer, comm, command="run", petsc_options=None, resume=Non
     try:
         run_steps(steps, state)
     except (Exception, Interrupted) as e:
-        # a failed or interrupted run still says what it did: the steps done, their counts
-        # and parts, the step it stopped in and why ("status": "failed" or "interrupted");
-        # the series written so far stay
+        # a run that stopped, failed or was interrupted still says what it did: the steps
+        # done, their counts and parts, the step it stopped in and why ("status":
+        # "stopped" with its physical "cause", "failed" or "interrupted"); the series
+        # written so far stay
         stopped = next((st.name for st in steps if st.name and st.name not in state.done), "")
         if isinstance(e, Interrupted):
             finish("interrupted", f"{stopped}: {e}")
         else:
-            finish("failed", f"{stopped}: {type(e).__name__}: {e}".splitlines()[0])
+            finish(_status(e), f"{stopped}: {type(e).__name__}: {e}".splitlines()[0],
+                   _cause(e).get("cause"))
         raise
     if model is not None and command == "run" and writer.root:
         writer.path("fields.h5")
         write_fields(str(writer.path("fields.xdmf")), model, state.u)
     return finish("finished")
+
+
+def _status(e):
+    """The summary's status of a run that ended with ``e``: "stopped" for a physical stop
+    (:class:`sealts.core.PhysicalStop`), "interrupted" by a signal, else "failed"."""
+    if isinstance(e, Interrupted):
+        return "interrupted"
+    return "stopped" if isinstance(e, PhysicalStop) else "failed"
+
+
+def _cause(e):
+    """{"cause": ...} of a physical stop, else {}."""
+    return {"cause": e.cause} if isinstance(e, PhysicalStop) else {}
 
 
 def _summary(state, command):

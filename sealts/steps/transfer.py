@@ -35,7 +35,7 @@ where that mesh settled it; in a stroke the film carries the fluid on the rod si
 """
 import numpy as np
 
-from ..core import SolveError
+from ..core import PhysicalStop, SolveError
 from ..mesh.transfer import interpolate, locate, onto_boundary
 from ..solid.pressure import boundary_loop
 from ..solid.dilatation import dilatation, match_dilatation
@@ -79,8 +79,9 @@ class Transfer(Step):
                 eq = quasi_static(model, extra, u, PseudoTime.window(t), dt)
             except SolveError as e:
                 why = str(e).splitlines()[0].split("; try a smaller")[0]
-                raise SolveError(no_equilibrium(src, model, extra, u, t) + " (the stabilised "
-                                 f"driver from it: {why})") from None
+                text, folded = no_equilibrium(src, model, extra, u, t)
+                kind = (lambda m: PhysicalStop("crease", m)) if folded else SolveError
+                raise kind(f"{text} (the stabilised driver from it: {why})") from None
         label = f"carried to the refined mesh, pseudo-time {t:g}"
         if load is None:
             state.counters.add(eq.counters)
@@ -106,9 +107,9 @@ NEAR_FOLD = 0.1
 
 
 def no_equilibrium(src, model, extra, u, t):
-    """Why the refined mesh found no equilibrium from the carried state ``u``, in words:
-    where the state is out of balance the most, and whether the scene's own mesh's surface
-    is folded onto itself (its self-contact holds) there."""
+    """Why the refined mesh found no equilibrium from the carried state ``u``: (in words,
+    where the state is out of balance the most and whether the scene's own mesh's surface
+    is folded onto itself there (its self-contact holds); whether it is)."""
     f = np.zeros(model.n)
     for term in model.local_terms(model.walls() + list(extra)):
         term.add_residual(t, u, np.zeros(model.n), f)
@@ -116,7 +117,7 @@ def no_equilibrium(src, model, extra, u, t):
     force = np.hypot(f[model.udofs[:, 0]], f[model.udofs[:, 1]])
     if not np.isfinite(force).all():     # an element of the carried state inverted
         return ("no equilibrium on the refined mesh near the state carried to it: "
-                + (model.solid.nonfinite(t, u) or "its residual is not finite"))
+                + (model.solid.nonfinite(t, u) or "its residual is not finite")), False
     k = int(np.argmax(force))
     X, x = model.mesh.X[k], model.mesh.X[k] + un[k]
     za, zb = model.groove.z_walls(t)
@@ -135,7 +136,7 @@ def no_equilibrium(src, model, extra, u, t):
                     "along the surface, at the scale of the mesh, and the refined mesh's "
                     "finer elements fold otherwise")
     return ("no equilibrium on the refined mesh near the state carried to it: Newton's "
-            f"method from it fails; its largest out-of-balance force is {where}{fold}")
+            f"method from it fails; its largest out-of-balance force is {where}{fold}"), bool(fold)
 
 
 def carried(old, u_old, new):
