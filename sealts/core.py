@@ -33,8 +33,8 @@ class PhysicalStop(SolveError):
 
 
 def reworded(e, message):
-    """A SolveError of the same kind as ``e`` (a PhysicalStop keeps its cause) with
-    another message: a caller that adds where it happened."""
+    """``e``'s message replaced (a caller that adds where it happened): a PhysicalStop
+    stays one, with its cause; any other SolveError becomes a plain one."""
     return PhysicalStop(e.cause, message) if isinstance(e, PhysicalStop) else SolveError(message)
 
 

@@ -1,5 +1,6 @@
 """The rod-side guard: a run ends with a one-line SolveError when a boundary node off the rod
-side is more than h_mix inside the rod, or when the rod side folds over.
+side is more than h_mix inside the rod, or when the rod side folds over (a PhysicalStop,
+"fold", where it turns back along the rod).
 
 Only the ``rod_side`` chain feels the rod (and carries the film); a node off it that passes
 into the rod means the chain no longer covers the contact, and nothing stops the others
@@ -105,8 +106,8 @@ class RodSideGuard(Term):
                    "seal.self_contact = \"on\" closes the crease on itself")
         kind = (lambda m: PhysicalStop("fold", m)) if on_rod else SolveError
         raise kind(f"at t = {t:.6g} the rod side folds over between nodes {a} and {b} "
-                         f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm, {h[k]:.3g} and "
-                         f"{h[k + 1]:.3g} um from the rod{self._wall_note(t, y[k])}): {why}")
+                   f"(y = {y[k]:.4f} and {y[k + 1]:.4f} mm, {h[k]:.3g} and "
+                   f"{h[k + 1]:.3g} um from the rod{self._wall_note(t, y[k])}): {why}")
 
     def _wall_note(self, t, y):
         """How far the fold at ``y`` lies from the nearer groove wall (a fold next to the

@@ -10,7 +10,7 @@ material, from the hold's final state) is solved as well and the differences are
 """
 import numpy as np
 
-from ..core import SolveError
+from ..core import PhysicalStop, SolveError
 from ..io.observers import Profiles, Series, StepLine, solver_columns
 from ..problem.hold_problem import HoldProblem
 from .base import Step
@@ -128,7 +128,8 @@ def long_term_check(step, U, t_end, protocol):
         eq = quasi_static(m, [load], u, window, 0.05)
         eq, _, _ = settle_front(m, load, eq, window[2], 0.05)
     except SolveError as e:
-        return {**out, "static_solve": f"failed: {e}"}
+        what = f"stopped ({e.cause})" if isinstance(e, PhysicalStop) else "failed"
+        return {**out, "static_solve": f"{what}: {e}"}
     f_hold = float(step.rod.forces(t_end, u).sum())
     f_static = float(step.rod.forces(t_end, eq.u).sum())
     return {**out, "max_displacement_difference_mm": float(np.abs(eq.u - u).max()),

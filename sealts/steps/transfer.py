@@ -35,7 +35,7 @@ where that mesh settled it; in a stroke the film carries the fluid on the rod si
 """
 import numpy as np
 
-from ..core import PhysicalStop, SolveError
+from ..core import PhysicalStop, SolveError, reworded
 from ..mesh.transfer import interpolate, locate, onto_boundary
 from ..solid.pressure import boundary_loop
 from ..solid.dilatation import dilatation, match_dilatation
@@ -77,6 +77,9 @@ class Transfer(Step):
         except SolveError:         # not near enough: the stabilised way (settle_front's)
             try:
                 eq = quasi_static(model, extra, u, PseudoTime.window(t), dt)
+            except PhysicalStop as e:   # its guards' own verdict on the refined mesh
+                raise reworded(e, f"{e} (on the refined mesh, from the state carried "
+                                  "to it)") from None
             except SolveError as e:
                 why = str(e).splitlines()[0].split("; try a smaller")[0]
                 text, folded = no_equilibrium(src, model, extra, u, t)
