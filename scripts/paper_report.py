@@ -1344,7 +1344,9 @@ h* scaled as sqrt(|v|) and the outstroke or instroke film by the sign of v.
             edits = ", ".join(f"{sec}.{key} = {v:g}" for (sec, key), v in r.edits.items())
             rows.append([f"`{r.key}`", f"`configs/{r.scene}.toml`" + (f" ({edits})" if edits else ""),
                          r.what, f"{info['wall_s']:.1f}" if info else "-",
-                         "ok" if info.get("returncode") == 0 else ("failed" if info else "not run"),
+                         "ok" if info.get("returncode") == 0 else
+                         (f"stopped: {sm['cause']}" if sm.get("status") == "stopped" else
+                          "failed") if info else "not run",
                          st.get("unknowns", sm.get("unknowns", "-")),
                          f"{st['steps_accepted']} / {st['steps_rejected']}" if st else "-"])
         sm = s1 or s0 or {}
