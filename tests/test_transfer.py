@@ -282,3 +282,29 @@ def test_a_fold_the_refined_mesh_cannot_carry_stops_the_run_and_says_where(tmp_p
     from sealts.io.results import Results
     summary = Results(tmp_path / "out").summary
     assert summary["status"] == "stopped" and summary["cause"] == "crease"
+
+
+def test_a_guard_s_physical_stop_in_the_transfer_keeps_its_cause(pressurised, tmp_path,
+                                                                 monkeypatch):
+    """Where Newton's method from the carried state fails and the stabilised driver's guards
+    stop it for a physical reason (here made to: extrusion), the run stops with that cause,
+    the refined mesh named, not as a crease or a plain failure."""
+    import sealts.steps.transfer as transfer
+    from sealts.core import PhysicalStop, SolveError
+    from sealts.steps import prepare
+
+    def diverged(*args, **kwargs):
+        raise SolveError("steady Newton solve diverged")
+
+    def extruded(*args, **kwargs):
+        raise PhysicalStop("extrusion", "extrusion: at t = 4 node 7 has flowed 0.3 mm")
+
+    monkeypatch.setattr(transfer, "static", diverged)
+    monkeypatch.setattr(transfer, "quasi_static", extruded)
+    s = replace(pressurised.scene, mesh=replace(pressurised.scene.mesh, h_edge=0.01,
+                                                cache=str(tmp_path)))
+    with pytest.raises(PhysicalStop) as e:
+        prepare(s)
+    assert e.value.cause == "extrusion"
+    assert str(e.value).startswith("extrusion: at t = 4 node 7 has flowed 0.3 mm (on the "
+                                   "refined mesh, from the state carried to it)")
