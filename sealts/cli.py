@@ -15,8 +15,9 @@ Also ``python -m sealts``. Subcommands:
 
 Exit codes: 0 success, 2 bad input (scene, files, usage, PETSc option names and values),
 3 a solve that failed or a physical stop (extrusion, blow-by, a fold, a crease: printed
-"physical stop (cause): ...", summary.json "stopped"), 130 / 143 stopped by SIGINT / SIGTERM (the files written so far
-are closed and readable, summary.json says "interrupted" and where).
+"physical stop (cause): ...", summary.json "stopped"), 130 / 143 stopped by SIGINT /
+SIGTERM (the files written so far are closed and readable, summary.json says
+"interrupted" and where).
 """
 import sys
 from pathlib import Path

@@ -91,8 +91,9 @@ friction 67.3-67.5 / 62.9-63.2 on every one.
 * Time: at rtol 1e-3 the net leakage is 0.0003 mm^3 (0.002 %) and the transports 0.01 %
   from rtol 1e-4 (0.025 / 0.2 without the refinement); on the refined default 15.9726,
   15.9702, 15.9701 mm^3 at rtol 1e-2, 1e-3, 1e-4 with BDF 2 (benchmarks/work_precision.md,
-  2026-12-05 21:08; with BDF 3 15.9708, 15.9706, 15.9694); on the coarse mesh the whole sweep 1e-2 .. 1e-5 moves the net leakage by
-  0.03 % (tests/test_stroke_accuracy.py).
+  2026-12-05 21:08; with BDF 3 15.9708, 15.9706, 15.9694); on the coarse mesh the whole
+  sweep 1e-2 .. 1e-5 moves the net leakage by 0.003 % with BDF 2
+  (tests/test_stroke_accuracy.py).
 
 The tolerances below are therefore not the error of the result (above) but what a change of
 platform may move the same computation by: under the max norm a change of rtol by one part

@@ -176,6 +176,7 @@ class Problem:
         self._cond = False            # its Prony block's condensation, once computed
         self._structured = None       # ... by the term that owns the block (found with it)
         self._pool = BufferPool()     # for the Jacobian's values (_free_buffer)
+        self._bdf_order = None        # TS BDF's order in force (make_ts; the summary's)
         # more TS defaults of this problem (option name without prefix -> value); the
         # command line and the scene's [petsc] table win
         self.ts_defaults = {}
@@ -445,7 +446,7 @@ class Problem:
         UMFPACK took over from PETSc's LU if it did."""
         SOLVERS[self.prefix or ""] = out = _solver_in_force(snes, ts)
         if ts is not None and ts.getType() == PETSc.TS.Type.BDF:
-            out["ts_bdf_order"] = getattr(self, "_bdf_order", None)
+            out["ts_bdf_order"] = self._bdf_order
         if self.lu_fallback is not None:
             out["pc_factor_mat_solver_type"] = (
                 f"umfpack (from t = {self.lu_fallback:.6g}: {self.lu_fallback_why})")
