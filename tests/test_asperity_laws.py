@@ -9,7 +9,7 @@ import pytest
 
 from conftest import central_differences, scene, slips_off_the_kinks
 from sealts.contact.asperity import ExponentialLaw, GreenwoodWilliamson, law_from_scene
-from sealts.contact.asperity.greenwood_williamson import D_HI, D_LO, plane_strain_modulus
+from sealts.contact.asperity.greenwood_williamson import D_HI, D_LO
 
 
 def tanh_sinh_moment(n, d, levels=7):
@@ -81,7 +81,7 @@ def test_the_scene_chooses_the_law_and_its_modulus(tmp_path):
     nu = (3 * k - 2 * g) / (2 * (3 * k + g))
     assert gw.modulus == pytest.approx(2 * g * (1 + nu) / (1 - nu ** 2), rel=1e-12)
     assert gw.modulus == pytest.approx(4 * g, rel=2e-3)
-    assert plane_strain_modulus(mat) == gw.modulus
+    assert mat.plane_strain_modulus == gw.modulus
     assert gw.contact_gap == D_HI * s.asperity.summit_sigma
     assert isinstance(law_from_scene(scene("oring_stroke").asperity), ExponentialLaw)
     with pytest.raises(SceneError, match="summit_radius is only used with"):

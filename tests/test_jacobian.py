@@ -55,8 +55,9 @@ def test_problem_jacobian(scheme, factors):
     assert err < FD_REL, err
 
 
-@pytest.mark.parametrize("factors", ["none", "patir-cheng", "table"])
-def test_flux_derivatives_in_gap(factors, tmp_path):
+@pytest.mark.parametrize("factors,stiff", [("none", 0.0), ("patir-cheng", 0.0), ("table", 0.0),
+                                           ("patir-cheng", 38.0), ("none", 3800.0)])
+def test_flux_derivatives_in_gap(factors, stiff, tmp_path):
     rq = 2.15e-4
     if factors == "patir-cheng":
         ff = FlowFactors.patir_cheng(rq, 1 / 3)
@@ -66,12 +67,25 @@ def test_flux_derivatives_in_gap(factors, tmp_path):
         ff = FlowFactors.from_table(p, rq)
     else:
         ff = FlowFactors.none()
-    y = np.linspace(0.0, 1.0, 9)
+    y = np.linspace(0.0, 1.0, 9) ** 1.3
     # gaps from open film down through the regularised range to asperity overlap
     h = np.array([2e-3, 1.1e-3, 7e-4, 3.3e-4, 4.1e-5, 1.3e-5, -2e-5, -3e-4, 1.7e-4])
     p = np.linspace(1.0, 0.0, 9) + 0.1 * np.sin(7 * y)
-    args = (50.0, 1e-8, 1e-5, ff.model, ff.par, ff.table_h, ff.table_pp, ff.table_ps)
-    q, dqa, dqb, dha, dhb = element_fluxes(y, h, p, *args)
+    # stiff: the upwinded Couette flow, element Peclet numbers ~0.05..1e9 (38) or 100x less
+    args = (50.0, 1e-8, 1e-5, ff.model, ff.par, ff.table_h, ff.table_pp, ff.table_ps, stiff)
+    q, dqa, dqb, dha, dhb, dql = element_fluxes(y, h, p, *args)
+    # dq/dL through the element lengths, moving each node (y) in turn
+    for k in range(y.size):
+        e = np.zeros_like(y)
+        e[k] = 1e-8
+        dy = (element_fluxes(y + e, h, p, *args)[0] - element_fluxes(y - e, h, p, *args)[0]) \
+            / 2e-8
+        ana = np.zeros_like(q)
+        if k < q.size:
+            ana[k] -= dql[k]
+        if k > 0:
+            ana[k - 1] += dql[k - 1]
+        assert np.allclose(ana, dy, rtol=1e-5, atol=1e-7 * np.abs(dql).max()), k
     eps = 1e-9
     for k in range(h.size):
         e = np.zeros_like(h)

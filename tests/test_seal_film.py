@@ -38,12 +38,12 @@ def coarse(tmp_path):
 
 
 def make_term(mesh, layout, factors="none", end="min_z", squeeze=True, v=80.0,
-              surface_normal=False, shear=False):
+              surface_normal=False, shear=False, stiff=0.0):
     ff = FlowFactors.patir_cheng(RQ, 1.0) if factors == "patir-cheng" else FlowFactors.none()
     side = RodSide(mesh.X, layout.rod_nodes, rod, AREA, udofs=layout.udofs, rod_rate=rod_rate)
     return SealFilmTerm(side, layout.film_dofs, lambda t: v, ETA, lambda t: 1.0 + 0.1 * t,
                         0.2, ff=ff, h_floor=H_FLOOR, squeeze=squeeze, pressurised_end=end,
-                        surface_normal=surface_normal, shear=shear, beta=0.3)
+                        surface_normal=surface_normal, shear=shear, beta=0.3, stiff=stiff)
 
 
 def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5, h_mean=1.7e-3, p_uniform=False):
@@ -69,20 +69,22 @@ def seal_state(mesh, layout, seed, t=0.3, h_low=1.5e-5, h_mean=1.7e-3, p_uniform
     return u, ud
 
 
-@pytest.mark.parametrize("factors,end,normal,gap", [("none", "min_z", False, "thin"),
-                                                    ("patir-cheng", "max_z", True, "thin"),
-                                                    ("none", "min_z", False, "thick")])
-def test_seal_film_jacobian(tmp_path, factors, end, normal, gap):
+@pytest.mark.parametrize("factors,end,normal,gap,stiff", [
+    ("none", "min_z", False, "thin", 0.0), ("patir-cheng", "max_z", True, "thin", 0.0),
+    ("none", "min_z", False, "thick", 0.0), ("patir-cheng", "min_z", True, "thin", 27.0)])
+def test_seal_film_jacobian(tmp_path, factors, end, normal, gap, stiff):
     """Every block (p-p, p-u_r, p-u_z, p-u_r' through the TS shift, u_r-p, u_r-u_z, and the
     shear and surface-normal loads' u_z-p, u_z-u_r, u_z-u_z, u_z-u_r') against central
     differences in U and U'; bound 1e-6 of the largest entry of each row, and of each block
     (film pressure, u_r, u_z rows and columns of the chain). The "thin" films
     are 0.5..3 um with one node in the h_floor range and a sliding rod; the "thick" one
     (30..170 um, uniform p, rod at rest) leaves the squeeze-rate gradient of Eq. 32-33 as
-    the shear, which is otherwise far below round-off of the rest."""
+    the shear, which is otherwise far below round-off of the rest. ``stiff`` = pi E' (MPa)
+    of the hyperelastic O-ring's long-term modulus: the upwinded Couette flow, its element
+    Peclet numbers from about 1 to 1e3 over these gaps."""
     mesh, layout = coarse(tmp_path)
     term = make_term(mesh, layout, factors, end, surface_normal=normal, shear=True,
-                     v=80.0 if gap == "thin" else 0.0)
+                     v=80.0 if gap == "thin" else 0.0, stiff=stiff)
     t = 0.3
     if gap == "thin":
         u, ud = seal_state(mesh, layout, 1, t)
@@ -411,14 +413,14 @@ def test_pressurised_oring_with_film(tmp_path):
     assert moving["shear"] > 0                               # the rod drags the seal along
 
 
-@pytest.mark.parametrize("end", ["min_z", "max_z"])
-def test_leakage_term_jacobian_and_flows(tmp_path, end):
+@pytest.mark.parametrize("end,stiff", [("min_z", 0.0), ("max_z", 0.0), ("min_z", 27.0)])
+def test_leakage_term_jacobian_and_flows(tmp_path, end, stiff):
     """The leakage ODEs dV/dt = Q (LeakageTerm): their flows are SealFilmTerm.flows, and their
     Jacobian in U and U' (with the shift) matches central differences to 1e-6 of each row's
-    largest entry."""
+    largest entry (``stiff``: with the upwinded Couette flow)."""
     from sealts.film.seal_film import LeakageTerm
     mesh, layout = coarse(tmp_path)
-    term = make_term(mesh, layout, "patir-cheng", end)
+    term = make_term(mesh, layout, "patir-cheng", end, stiff=stiff)
     n = layout.n + 2
     leak = LeakageTerm(term, [layout.n, layout.n + 1])
     t = 0.3

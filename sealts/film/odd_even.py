@@ -17,7 +17,9 @@ wherever the film is thin; Greenwood and Williamson's summits with the rubber's 
 not, nor does Eq. 44 with an h_mix far below the film (a smooth rod), so the film rides
 on the seal's own stiffness, which grows as the mesh is refined (Pe ~ L^2): a fine enough
 contact mesh resolves it (the meshes measured: README, "Why GW needs a fine contact
-mesh").
+mesh"). The fv scheme's upwinded Couette flow (:mod:`sealts.film.reynolds_fv`, on by
+default: ``film.upwind``) damps the mode where Pe is large; this indicator watches for it
+where that is off, and with the paper's scheme.
 
 The indicator, over the contact zone (the nodes from the first to the last whose h lies
 below the law's contact gap), on the regularised gap g = h_eff (:mod:`sealts.film.gap`, so

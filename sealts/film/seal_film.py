@@ -21,7 +21,9 @@ and the seal displacements; this term owns
       M_i = (L_{i-1/2} + L_{i+1/2}) / 2,
 
   (L_e is y_b - y_a but where the rod side lies along a groove wall and its nodes share
-  one axial position: :mod:`sealts.film.reynolds_fv`, "Element lengths")
+  one axial position: :mod:`sealts.film.reynolds_fv`, "Element lengths"; with ``stiff`` =
+  pi E' > 0 q_e carries the upwinded Couette share of the same module, "Upwinded Couette
+  flow")
 
   each multiplied by a fixed positive row scale (so the rows read in MPa), with the
   Dirichlet rows p = p_in at the pressurised end of the chain and p = p_out at the other;
@@ -50,7 +52,8 @@ Exact Jacobian (the chain rule through the gap provider, docs/design.md):
 * dq_e/dp_a = 1/(L I1), dq_e/dp_b = -1/(L I1) and dq_e/dh_a, dq_e/dh_b from
   :func:`sealts.film.reynolds_fv.element_fluxes`, with dh/du_r = 1;
 * dq_e/dL = (p_b - p_a) / (L^2 I1) (I1, I2 are averages over the element in its own
-  coordinate, independent of L), with dL/du_z,b = c_e, dL/du_z,a = -c_e, c_e = dy_e / L_e;
+  coordinate, independent of L) plus the upwinded share's through P_e, from
+  :func:`element_fluxes`, with dL/du_z,b = c_e, dL/du_z,a = -c_e, c_e = dy_e / L_e;
 * the storage S_i = M_i h_eff'(h_i) dh_i/dt: dS/dh_i from :func:`storage`, dS/d(dh_i/dt)
   = M_i h_eff'(h_i) times the TS ``shift`` on u_r,i (dh'/du' = 1), and through M_i
   dS/du_z,i+1 = c_{i+1/2} / 2, dS/du_z,i-1 = -c_{i-1/2} / 2, dS/du_z,i = (c_{i-1/2} -
@@ -103,17 +106,19 @@ class SealFilmTerm(ChainFilm):
 
     def __init__(self, side, pdofs, v, eta, p_in, p_out, ff=None, h_floor=1e-5,
                  squeeze=True, pressurised_end="min_z", h_ref=1e-3, surface_normal=False,
-                 shear=True, beta=0.5):
+                 shear=True, beta=0.5, stiff=0.0):
         """``side``: the :class:`sealts.contact.rod_side.RodSide` (chain, dofs, rod, A);
         ``pdofs``, ``v``, ``eta``, ``p_in``, ``p_out``, ``ff``, ``h_floor``, ``squeeze``,
         ``pressurised_end``: as :class:`sealts.film.chain_film.ChainFilm`;
         ``surface_normal``: also the axial part of the pressure on the seal's inclined
         surface; ``shear``: the fluid shear force (Eq. 32-34) with the weight ``beta`` of
-        Eq. 33 (module docstring). The film rows are scaled by their diagonal for the
+        Eq. 33 (module docstring); ``stiff`` (MPa): pi E' of the seal for the upwinded
+        Couette flow (0: none). The film rows are scaled by their diagonal for the
         reference chain at a uniform gap ``h_ref`` (mm) until :meth:`set_row_scale` fixes
         them at a state."""
         super().__init__(side, pdofs, v, eta, p_in, p_out, ff, h_floor, squeeze,
                          pressurised_end)
+        self.stiff = float(stiff)
         m = side.m
         ur, uz, pd = side.ur, side.uz, self.pd
         lo, hi = side.lo, side.hi
@@ -161,17 +166,17 @@ class SealFilmTerm(ChainFilm):
     def set_row_scale(self, t, u, udot=None):
         """Fix each balance row's scale to 1 / its diagonal at this state (rows in MPa)."""
         y, h, hd, p = self.film(t, u, udot)
-        _, dqa, dqb, _, _ = element_fluxes(y, h, p, self.v(t), self.eta, self.h_floor,
-                                           *self._ffargs())
+        _, dqa, dqb, _, _, _ = element_fluxes(y, h, p, self.v(t), self.eta, self.h_floor,
+                                              *self._ffargs(), self.stiff)
         self.row_scale = np.ones(self.side.m)
         self.row_scale[1:-1] = 1.0 / (dqa[1:] - dqb[:-1])
 
     def _fluxes(self, t, y, h, hd, p, v=None):
         v = self.v(t) if v is None else v
-        q, dqa, dqb, dha, dhb = element_fluxes(y, h, p, v, self.eta, self.h_floor,
-                                               *self._ffargs())
+        q, dqa, dqb, dha, dhb, dql = element_fluxes(y, h, p, v, self.eta, self.h_floor,
+                                                    *self._ffargs(), self.stiff)
         s, ds_dh, ds_dhd = storage(y, h, hd, self.h_floor)
-        return q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd
+        return q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd, dql
 
     def balance(self, t, u, udot=None, fluxes=None):
         """The unscaled nodal balances M_i dh_eff_i/dt + q_{i+1/2} - q_{i-1/2} (mm^2/s), all
@@ -202,7 +207,7 @@ class SealFilmTerm(ChainFilm):
         eta, beta = self.eta, self.beta
         if fluxes is None:
             fluxes = self._fluxes(t, y, h, hd, p, v)
-        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = fluxes
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd, dql = fluxes
         he, dhe, ik, dik, cv, dcv = nodal_conductance(h, eta, self.h_floor, *self._ffargs())
         L, cl = element_lengths(y)
         qn = np.empty(m)
@@ -229,7 +234,7 @@ class SealFilmTerm(ChainFilm):
         # q_i through the element flows: mean of two inside, the end elements' own at the ends
         wa = np.where(a == 0, 1.0, 0.5) * cq[a]
         wb = np.where(b == m - 1, 1.0, 0.5) * cq[b]
-        dqL = (p[1:] - p[:-1]) * dqa / L * cl
+        dqL = dql * cl
         ecols = [pd[a], pd[b], ur[a], ur[b], uz[a], uz[b]]
         for col, d in zip(ecols, (dqa, dqb, dha, dhb, -dqL, dqL)):
             rows += [a, b]
@@ -283,9 +288,10 @@ class SealFilmTerm(ChainFilm):
 
     def jacobian_values(self, t, u, udot, shift):
         y, h, hd, p = self.film(t, u, udot)
-        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = self._fluxes(t, y, h, hd, p)
+        fluxes = self._fluxes(t, y, h, hd, p)
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd, dql = fluxes
         L, c = element_lengths(y)
-        dqL = (p[1:] - p[:-1]) * dqa / L * c             # dq/dy_b = dp / (L^2 I1) dL/dy_b
+        dqL = dql * c                                    # dq/dy_b = dq/dL dL/dy_b
         d = np.stack([dqa, dqb, dha, dhb, -dqL, dqL], 1)  # per element, columns as the pattern
         ev = np.stack([d, -d], 1).ravel()[self._ekeep]
         i = np.arange(1, self.side.m - 1)
@@ -302,8 +308,7 @@ class SealFilmTerm(ChainFilm):
             dr = self.lengths(self.side.R + u[self.side.ur])
             vals += [A * dr, 0.5 * A * p, -0.5 * A * p]
         if self.shear:
-            sv = self._shear(t, y, h, hd, p, shift_hd,
-                             fluxes=(q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd))[3]
+            sv = self._shear(t, y, h, hd, p, shift_hd, fluxes=fluxes)[3]
             vals.append(sv)
             if self.work is not None:              # d(-v sum F) = v times d(-F)
                 vals.append(self.work[1](t) * sv)
@@ -345,12 +350,12 @@ class LeakageTerm(Term):
         (plus shift times those by U')."""
         f = self.film
         y, h, hd, p = f.film(t, u, udot)
-        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd = f._fluxes(t, y, h, hd, p)
+        q, dqa, dqb, dha, dhb, s, ds_dh, ds_dhd, dql = f._fluxes(t, y, h, hd, p)
         shift_hd = shift if (f.squeeze and udot is not None) else 0.0
         out = []
         for e, node, sgn in ((0, 0, 1.0), (-1, -1, -1.0)):
             L, c = element_length(y[e] - y[e - 1] if e == -1 else y[1] - y[0])
-            dqL = (p[1] - p[0] if e == 0 else p[-1] - p[-2]) * dqa[e] / L * c
+            dqL = dql[e] * c
             M = 0.5 * L
             rate = s[node] / M * c                          # dS/dM dM/dy_b
             d = np.array([dqa[e], dqb[e], dha[e], dhb[e], -dqL, dqL])

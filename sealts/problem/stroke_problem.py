@@ -206,7 +206,9 @@ class StrokeProblem:
                                               alpha=fm.alpha, **film_kw)
                 self.leakage = PaperLeakageTerm(self.film, self.vdofs)
             else:
-                self.film = SealFilmTerm(side, lay.film_dofs, **film_kw)
+                # the upwinded Couette flow's stiffness: pi E' of the long-term material
+                stiff = np.pi * model.material.plane_strain_modulus if fm.upwind else 0.0
+                self.film = SealFilmTerm(side, lay.film_dofs, stiff=stiff, **film_kw)
                 self.leakage = LeakageTerm(self.film, self.vdofs)
         self.friction = self.groove_friction = None
         if slip_state:

@@ -68,6 +68,9 @@ class Film:
     alpha: float = option(0.5, ge=0.0, le=1.0, doc="paper scheme: gradient weight (Eq. 27)")
     beta: float = option(0.5, ge=0.0, le=1.0, doc="weight of the squeeze-rate gradient (Eq. 33)")
     squeeze: bool = option(True, doc="carry the squeeze term dh/dt of Eq. 13")
+    upwind: bool = option(True, doc="fv scheme on a seal: upwind the Couette flow where the "
+                          "gap's node-to-node mode is advection-dominated (element Peclet "
+                          "number with the seal's modulus, sealts.film.reynolds_fv)")
     flow_factors: str = option("none", choices=("none", "patir-cheng", "table"),
                                doc="pressure/shear flow factors")
     rq: float = option(0.0, unit="mm", ge=0.0, doc="composite RMS roughness Rq (Eq. 14)")

@@ -43,6 +43,15 @@ class Hyperelastic:
     def bulk_modulus(self):
         return 2.0 / self.d1
 
+    @property
+    def plane_strain_modulus(self):
+        """E' = E/(1 - nu^2) (MPa) from the initial shear and bulk moduli G and K:
+        E = 9KG/(3K + G), nu = (3K - 2G)/(2(3K + G)); 4 G for an incompressible one."""
+        g, k = self.shear_modulus, self.bulk_modulus
+        e = 9.0 * k * g / (3.0 * k + g)
+        nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g))
+        return e / (1.0 - nu * nu)
+
 
 def NeoHooke(c10, d1, alpha_th=0.0, d_theta=0.0):
     """Compressible Neo-Hooke (paper Eq. 1-5)."""

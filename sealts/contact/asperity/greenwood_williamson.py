@@ -105,19 +105,9 @@ class GreenwoodWilliamson(AsperityLaw):
         """The law of a scene's keys; ``asperity.modulus = 0`` takes E' of the seal's
         material against a rigid rod, E/(1 - nu^2) from its initial shear and bulk moduli."""
         a = asperity
-        modulus = a.modulus if a.modulus > 0.0 else plane_strain_modulus(material)
+        modulus = a.modulus if a.modulus > 0.0 else material.plane_strain_modulus
         return cls(a.summit_density, a.summit_radius, a.summit_sigma, modulus)
 
     def pressure(self, h):
         return gw_pressure_array(np.asarray(h, float), self.k, self.sigma, _F, _DF, D_LO,
                                  D_STEP, _F_HI, _DF_HI)
-
-
-def plane_strain_modulus(material):
-    """E/(1 - nu^2) (MPa) of an isotropic material with initial shear modulus G and bulk
-    modulus K (``material.shear_modulus``, ``material.bulk_modulus``): E = 9KG/(3K + G),
-    nu = (3K - 2G)/(2(3K + G)); 4 G for an incompressible one."""
-    g, k = material.shear_modulus, material.bulk_modulus
-    e = 9.0 * k * g / (3.0 * k + g)
-    nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g))
-    return e / (1.0 - nu * nu)
