@@ -126,8 +126,10 @@ def test_rect_ring_corner_radius_rounds_the_rod_side(tmp_path, mirror):
     of that radius, part of the rod side. Its chain runs from the pressure-side face to the
     atmosphere-side face with z increasing, ends where the arcs meet those faces (r = r_i +
     rc), its arc nodes lie on the circles, and the four groups still cover the boundary
-    loop edge for edge. Sharp corners (rc = 0) keep the mesh they had (its cache key)."""
-    from sealts.mesh.seal_mesh import RectangularRing, _key, build_mesh
+    loop edge for edge. With sharp corners (rc = 0) the rod side runs on up the side faces
+    by FLANK: its chain ends there (r = r_i + FLANK on z = z_min and z_max), with nodes on
+    the flanks, the rest on r = r_i; the key says so."""
+    from sealts.mesh.seal_mesh import FLANK, RectangularRing, _key, build_mesh
     from sealts.solid.pressure import boundary_loop
     ri, ro, z0, z1, rc = 25.05, 27.45, -1.0, 1.0, 0.2
     mesh = build_mesh(RectangularRing(ri, ro, z0, z1, rc), 0.05, 0.2, 0.3, tmp_path,
@@ -149,7 +151,15 @@ def test_rect_ring_corner_radius_rounds_the_rod_side(tmp_path, mirror):
     sharp = RectangularRing(ri, ro, z0, z1)
     assert _key(sharp, 0.05, 0.2, 0.3)[1] == {
         "kind": "RectangularRing", "r_inner": ri, "r_outer": ro, "z_min": z0, "z_max": z1,
-        "h_contact": 0.05, "h_bulk": 0.2, "grading": 0.3, "version": 1}
+        "h_contact": 0.05, "h_bulk": 0.2, "grading": 0.3, "version": 1, "flank": FLANK}
+    mesh = build_mesh(sharp, 0.05, 0.2, 0.3, tmp_path, mirror=mirror)
+    chain = mesh.chain("rod_side")
+    r, z = mesh.X[chain, 0], mesh.X[chain, 1]
+    flank = (z == z0) | (z == z1)
+    assert r[0] == pytest.approx(ri + FLANK) and r[-1] == pytest.approx(ri + FLANK)
+    assert z[0] == z0 and z[-1] == z1 and flank.sum() >= 6        # two or more per flank
+    assert np.allclose(r[~flank], ri) and np.all(np.diff(z) >= 0)
+    assert np.all(np.diff(r[z == z0]) < 0) and np.all(np.diff(r[z == z1]) > 0)
 
 
 def test_layer_depth_keeps_the_contact_size_beneath_the_rod_side(tmp_path):

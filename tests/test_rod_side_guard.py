@@ -196,9 +196,11 @@ def test_a_seal_clear_of_the_rod_blows_by(tmp_path):
 
 @pytest.mark.parametrize("corner_radius", [0.0, 0.1])
 def test_a_sharp_cornered_ring_is_told_to_round_its_corners(corner_radius):
-    """The rectangular ring's side-face node next to a sharp corner set on the rod (the
-    stress matrix's sharp ring stops so at t = 6.6 s): the stop says the corners are sharp
-    and which key rounds them; a ring with rounded corners is not told so."""
+    """The rectangular ring's side-face node next to the rod side set on the rod (with sharp
+    corners, beyond the rod side's FLANK up the face; the stress matrix's sharp ring
+    stopped so at t = 6.6 s before the rod side ran up the flanks): the stop says the
+    corners are sharp and which key rounds them; a ring with rounded corners is not told
+    so."""
     from conftest import ROOT, scene
     from sealts.problem.seal_model import model_from_scene
     s = scene("rect_ring_mount", seal={"corner_radius": corner_radius},

@@ -158,7 +158,7 @@ class SealFilmTerm(ChainFilm):
     def _reference_row_scale(self, h_ref):
         """1 / diagonal of the balance rows on the reference chain at the uniform gap h_ref."""
         ik = conductance(h_ref, self.eta, self.h_floor, *self._ffargs())[0]
-        d = 1.0 / (np.diff(self.side.Z) * ik)                          # 1 / (L I1) per element
+        d = 1.0 / (element_lengths(self.side.Z)[0] * ik)               # 1 / (L I1) per element
         s = np.ones(self.side.m)
         s[1:-1] = 1.0 / (d[1:] + d[:-1])
         return s

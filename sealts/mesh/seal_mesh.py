@@ -12,15 +12,18 @@ Named boundaries (gmsh physical curves, kept as node and edge sets):
 * ``groove``          faces the groove bottom.
 
 For the O-ring the four quarter arcs are centred on the directions -r (rod_side), -z
-(pressure_side), +r (groove) and +z (atmosphere_side). Elements are four-node quads
-(recombined, subdivided so that none is left triangular), of size ``h_contact`` next to the
-rod side and growing to ``h_bulk`` over ``grading_distance``; with ``layer_depth`` > 0 the
-size stays ``h_contact`` to that depth beneath the rod side and grows over
-``grading_distance`` beyond it. The film's transports are set at the contact's inlet and
-outlet, a few hundredths of a millimetre long, and the solid beneath them shapes the gap
-there: without the layer the size a few contact elements deep follows h_bulk, and the net
-leakage scatters with h_contact instead of converging (benchmarks/work_precision.md, the
-layer family).
+(pressure_side), +r (groove) and +z (atmosphere_side). The rectangle's rod side is its
+inner face with the two corners: rounded (``corner_radius``), the quarter circles; sharp,
+the first FLANK of each side face beyond the corner, so the film and the asperity contact
+cover the side face's nodes that a tilted or dragged ring lays on the rod. Elements are
+four-node quads (recombined, subdivided so that none is left triangular), of size
+``h_contact`` next to the rod side and growing to ``h_bulk`` over ``grading_distance``;
+with ``layer_depth`` > 0 the size stays ``h_contact`` to that depth beneath the rod side
+and grows over ``grading_distance`` beyond it. The film's transports are set at the
+contact's inlet and outlet, a few hundredths of a millimetre long, and the solid beneath
+them shapes the gap there: without the layer the size a few contact elements deep follows
+h_bulk, and the net leakage scatters with h_contact instead of converging
+(benchmarks/work_precision.md, the layer family).
 
 Refinement at given points (``build_mesh(..., refine=(points, h))``, the scene key
 ``mesh.h_edge``: :mod:`sealts.mesh.contact_edges` puts the points along the rod side around
@@ -48,6 +51,10 @@ from pathlib import Path
 import numpy as np
 
 GROUPS = ("rod_side", "pressure_side", "groove", "atmosphere_side")
+# mm of each side face beyond a sharp corner that belongs to the rod side (module docstring):
+# the sharp-cornered ring of the stress matrix (benchmarks/stress.md) lays the side face's
+# first node, 0.05 mm off the corner, on the rod; the rounded ring's arcs end 0.1 mm off it
+FLANK = 0.1
 
 
 @dataclass(frozen=True)
@@ -115,8 +122,9 @@ def _key(shape, h_contact, h_bulk, grading_distance, mirror=False, layer_depth=0
         points, h = refine
         digest = hashlib.sha1(np.round(np.asarray(points, float), 9).tobytes()).hexdigest()
         spec["refine"] = {"h": float(h), "points": len(points), "digest": digest[:16]}
-    if not spec.get("corner_radius", 1.0):     # sharp corners keep their meshes' keys
+    if spec["kind"] == "RectangularRing" and not spec["corner_radius"]:
         del spec["corner_radius"]
+        spec["flank"] = min(FLANK, 0.25 * (spec["r_outer"] - spec["r_inner"]))
     if mirror:             # only then: the default meshes keep their keys
         spec["mirror"] = True
     text = json.dumps(spec, sort_keys=True)
@@ -211,15 +219,25 @@ def _rectangle(occ, s, half):
     of each group (rod side, pressure side, groove, atmosphere side or the mid-plane). With
     a corner radius rc the two corners on the rod side are quarter circles, part of the
     rod side: a tilted ring then meets the rod with its rounded corner, which the film and
-    the asperity contact cover (with sharp corners a corner node off the rod side enters
-    the rod)."""
+    the asperity contact cover; with sharp corners the rod side runs on up the side faces
+    by FLANK (a quarter of the height at most), where a dragged corner lays them on the
+    rod."""
     rc, ri, ro = s.corner_radius, s.r_inner, s.r_outer
     z_top = mid_plane(s) if half else s.z_max
     if rc == 0.0:
-        pts = [occ.addPoint(ri, z_top, 0), occ.addPoint(ri, s.z_min, 0),
-               occ.addPoint(ro, s.z_min, 0), occ.addPoint(ro, z_top, 0)]
-        curves = [occ.addLine(pts[i], pts[(i + 1) % 4]) for i in range(4)]
-        return curves, [[c] for c in curves]
+        f = min(FLANK, 0.25 * (ro - ri))
+        rod_top, rod_low = occ.addPoint(ri, z_top, 0), occ.addPoint(ri, s.z_min, 0)
+        low_end = occ.addPoint(ri + f, s.z_min, 0)
+        out_low, out_top = occ.addPoint(ro, s.z_min, 0), occ.addPoint(ro, z_top, 0)
+        rod = [occ.addLine(rod_top, rod_low), occ.addLine(rod_low, low_end)]
+        sides = [occ.addLine(low_end, out_low), occ.addLine(out_low, out_top)]
+        if half:
+            sides.append(occ.addLine(out_top, rod_top))
+            return rod + sides, [rod] + [[c] for c in sides]
+        top_end = occ.addPoint(ri + f, z_top, 0)
+        sides.append(occ.addLine(out_top, top_end))
+        flank = occ.addLine(top_end, rod_top)
+        return rod + sides + [flank], [[flank] + rod] + [[c] for c in sides]
     rod_top = occ.addPoint(ri, z_top - (0.0 if half else rc), 0)
     rod_low = occ.addPoint(ri, s.z_min + rc, 0)
     low_end = occ.addPoint(ri + rc, s.z_min, 0)

@@ -16,6 +16,7 @@ from ..contact.rod_side_guard import RodSideGuard
 from ..contact.rod_side import RodSide
 from ..contact.self_contact import SelfContact
 from ..mesh.partition import Partition
+from ..mesh.seal_mesh import FLANK
 from ..solid.stabilisation import ViscousStabilisation
 from ..solid.term import SolidTerm
 from .problem import Problem
@@ -289,10 +290,12 @@ class SealModel:
 
 
 # the rod-side guard's hint for a rectangular ring with sharp corners, whose rod side ends
-# at the corner: a ring that tilts sets the next node of its side face on the rod
-SHARP_CORNERS = ("; the ring's corners are sharp (seal.corner_radius = 0), so its rod side "
-                 "ends at them: with seal.corner_radius = 0.1 mm (say) the rounded corners "
-                 "belong to the rod side and carry the film and the asperity contact")
+# FLANK up each side face: a ring that tilts further sets the next node of a side face on
+# the rod
+SHARP_CORNERS = (f"; the ring's corners are sharp (seal.corner_radius = 0): its rod side "
+                 f"runs up to {FLANK:g} mm up the side faces, and a face beyond reached the "
+                 "rod; with seal.corner_radius = 0.1 mm (say) the rounded corners belong to the "
+                 "rod side and carry the film and the asperity contact")
 
 
 def model_from_scene(scene, comm=None, refine=None):

@@ -124,7 +124,8 @@ class Seal:
     inner_diameter: float = option(50.0, unit="mm", gt=0.0, doc="rectangle: inner diameter")
     corner_radius: float = option(0.0, unit="mm", ge=0.0,
                                   doc="rectangle: radius of the two corners on the rod side, "
-                                      "part of the rod side (0: sharp)")
+                                      "part of the rod side (0: sharp, the rod side then "
+                                      "runs 0.1 mm up the side faces)")
     symmetry: str = option("axisymmetric", choices=("axisymmetric", "planar"),
                            doc="axisymmetric ring or plane strain (per mm of depth)")
     self_contact: str = option("auto", choices=("auto", "on", "off"),
