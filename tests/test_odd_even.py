@@ -81,13 +81,15 @@ def test_the_stroke_warns_once_above_the_threshold():
     assert len(said) == 1 and "t = 2 s" in said[0] and "mesh.h_contact = 0.1 mm" in said[0]
 
 
-def _window(gw, tmp_path, t_end=0.35):
-    """The coarse O-ring (0.1 / 0.4 mm) on Greenwood-Williamson (``gw``) or the paper's law,
-    no solid friction, stroked to t_end: the odd_even column by accepted state, and the
-    run's error (None if it finished)."""
+def _window(gw, tmp_path, t_end=0.35, upwind=None):
+    """The coarse O-ring (0.1 / 0.4 mm) on Greenwood-Williamson (``gw``, its scene's central
+    film flux) or the paper's law (the default upwinded flux), or with ``upwind`` set, no
+    solid friction, stroked to t_end: the odd_even column by accepted state, and the run's
+    error (None if it finished)."""
+    film = {} if upwind is None else {"film": {"upwind": upwind}}
     s = scene("oring_stroke_gw" if gw else "oring_stroke",
               mesh={"h_contact": 0.1, "h_bulk": 0.4, "cache": str(tmp_path)},
-              stroke={"friction": False, "t_end": t_end, "output_times": []})
+              stroke={"friction": False, "t_end": t_end, "output_times": []}, **film)
     stroke = stroke_of(mount_and_pressurise(s))
     seen = []
     rec = Recorder(lambda t, U: seen.append(stroke.odd_even_recent[-1][0]))
@@ -105,6 +107,14 @@ def test_the_coarse_gw_stroke_stops_naming_the_odd_even_mode(tmp_path):
     assert seen.max() > 2.0 * ODD_EVEN_WARN, seen.max()
     assert error is not None and "alternates from node to node" in error, error
     assert "mesh.h_contact = 0.1 mm" in error
+
+
+def test_the_upwinded_flux_keeps_the_coarse_gw_film_smooth(tmp_path):
+    """The same coarse GW stroke with the upwinded Couette flow (sealts.film.reynolds_fv):
+    the share damps the mode, the run finishes its window and stays below the warning."""
+    seen, error = _window(True, tmp_path, upwind=True)
+    assert error is None, error
+    assert seen.max() < ODD_EVEN_WARN, seen.max()
 
 
 def test_the_papers_law_on_the_same_mesh_stays_smooth(tmp_path):
