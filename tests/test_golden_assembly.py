@@ -117,8 +117,11 @@ def stroke_problem(g, s, state, name):
     # the golden data predate the stroke's viscous stabilisation (a term of its own, whose
     # Jacobian tests/test_jacobian.py checks) and the rod friction's slips as TS unknowns
     # (now the default; tests/test_slip_state_friction.py checks them): compared without
-    # either, the rod friction through its anchors as then
-    s = replace(s, stroke=replace(s.stroke, stabilisation=0.0, friction_history="anchors"))
+    # either, the rod friction through its anchors as then; and the film's upwinded Couette
+    # flow (a change of the equation, checked in tests/test_film_upwind.py and the
+    # Jacobian tests): compared with the central flux, film.upwind = false
+    s = replace(s, stroke=replace(s.stroke, stabilisation=0.0, friction_history="anchors"),
+                film=replace(s.film, upwind=False))
     if name == "stroke_paper_ve":
         s = replace(s, film=replace(s.film, scheme="paper", flow_factors="patir-cheng",
                                     rq=2.15e-4, gamma=1.0, squeeze=True),

@@ -32,13 +32,14 @@ Discretisation on nodes y_1 < ... < y_n (the seal surface nodes in the coupled p
 
       q_e += xi(P_e) (|v|/2) (c_a - c_b) / v,   xi(P) = coth(P/2) - 2/P,
 
-  c_a, c_b = c(h) at the nodes: for P >> 1 it adds the upwind node's Couette flow less
-  the two nodes' mean, so a node thicker than its neighbours sends out more than it takes
-  in and the sawtooth decays; for P << 1 the added diffusivity xi |v| L / 4 ~ v^2 L^3 I1 / (24 pi E') vanishes as L^3
-  under refinement, and with rigid surfaces (``stiff`` = 0, the film-only scenes) it is
-  nil. The same cause, an advection-dominated Reynolds equation in the loaded contact,
-  leads full-system EHL solvers to artificial diffusion (Habchi et al., Advances in
-  Engineering Software 46, 2012). dq/dL (returned) includes P's dependence on L.
+  c_a, c_b = c(h) at the nodes: for P >> 1 it adds the upwind node's Couette flow less the
+  two nodes' mean, so a node thicker than its neighbours sends out more than it takes in
+  and the sawtooth decays; for P << 1 the added diffusivity xi |v| L / 4 ~ v^2 L^3 I1 / (24
+  pi E') vanishes as L^3 under refinement, and with rigid surfaces (``stiff`` = 0, the
+  film-only scenes) it is nil. The same cause, an advection-dominated Reynolds equation in
+  the loaded contact, leads full-system EHL solvers to artificial diffusion (Habchi et al.,
+  Advances in Engineering Software 46, 2012). dq/dL (returned) includes P's dependence on
+  L.
 * Nodal balance over the control volume of node i (half of each neighbouring element, M_i):
 
       R_i = M_i dh_eff_i/dt + q_{i+1/2} - q_{i-1/2} = 0,
@@ -257,7 +258,7 @@ class ControlVolumeScheme:
 
     def _fluxes(self, t, x, h, hd):
         q, dqa, dqb, dha, dhb, _ = element_fluxes(self.y, h, x, self.v_of_t(t), self.eta,
-                                               self.h_floor, *self._ff())
+                                                  self.h_floor, *self._ff())
         s, _, _ = storage(self.y, h, hd, self.h_floor)
         return q, dqa, dqb, s
 
@@ -282,7 +283,7 @@ class ControlVolumeScheme:
     def jacobian(self, t, x, h, hd):
         """Values for ``pattern`` and the derivatives of (Q_in, Q_out) at ``q_cols``."""
         _, dqa, dqb, _, _, _ = element_fluxes(self.y, h, x, self.v_of_t(t), self.eta,
-                                           self.h_floor, *self._ff())
+                                              self.h_floor, *self._ff())
         vals = np.stack([dqa, dqb, -dqa, -dqb], 1).ravel()[self._keep]
         rows = self.pattern[0]
         vals = np.concatenate([vals * self.row_scale[rows[:-2]], [1.0, 1.0]])
