@@ -630,7 +630,15 @@ class Problem:
         where an indicator crosses zero, then the term's ``event`` and a restart of the
         integrator (the DAE changed there). Every rank gathers U (collective) and evaluates
         its own terms' indicators. A SolveError of an event ends the run with its message
-        (``raised``, as the monitor's)."""
+        (``raised``, as the monitor's).
+
+        After the terms' events U's state is marked changed whether or not an event set an
+        unknown: an event changes its term's indicators (a moved front's target is measured
+        from its new place), and PETSc's TSEvent recomputes the indicators' signs at the
+        event only when the post-event changed U; otherwise it keeps them zero there and
+        does not count a sign change from zero as a crossing, so an indicator that passes
+        its other zero within the first step after its event was never located (a front's
+        target then ran 0.08 edges past a 0.02 tolerance on the coarse cycle)."""
         terms = [x for x in self.terms if getattr(x, "event_directions", ())]
         if not terms:
             return
@@ -658,6 +666,7 @@ class Problem:
                 if mine.size:
                     call(x.event, t, u, mine)
             self._set_from_events(X, before, u)
+            X.stateIncrease()       # the indicators changed: PETSc recomputes their signs
             ts.restartStep()
 
         span = _span(ts.getTime(), ts.getMaxTime())
