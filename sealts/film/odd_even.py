@@ -16,8 +16,8 @@ minimum gap jumps between steps and TS crawls. The paper's law (Eq. 44) keeps S 
 wherever the film is thin; Greenwood and Williamson's summits with the rubber's modulus do
 not, nor does Eq. 44 with an h_mix far below the film (a smooth rod), so the film rides
 on the seal's own stiffness, which grows as the mesh is refined (Pe ~ L^2): a fine enough
-contact mesh resolves it (the meshes measured: README, "Why GW needs a fine contact
-mesh"). The fv scheme's upwinded Couette flow (:mod:`sealts.film.reynolds_fv`, on by
+contact mesh resolves it (the meshes measured: README, "The film's node-to-node
+mode"). The fv scheme's upwinded Couette flow (:mod:`sealts.film.reynolds_fv`, on by
 default: ``film.upwind``) damps the mode where Pe is large; this indicator watches for it
 where that is off, and with the paper's scheme.
 
@@ -39,8 +39,8 @@ import numpy as np
 
 # the indicator from which the stroke warns, and from which a stall within the last
 # ODD_EVEN_STEPS accepted steps names the mode in its message: a sawtooth is of the order of the
-# mean gap, a resolved film far below (the values measured: README, "Why GW needs a fine
-# contact mesh")
+# mean gap, a resolved film far below (the values measured: README, "The film's
+# node-to-node mode")
 ODD_EVEN_WARN = 0.3
 ODD_EVEN_STEPS = 200
 # fewer contact nodes than this: no indicator; nodes per window
@@ -85,5 +85,6 @@ def odd_even_note(value, t, h_contact):
     return (f"the film's gap alternates from node to node over the contact at t = {t:.6g} s "
             f"(odd-even amplitude {value:.2g} of the local mean gap): the contact mesh "
             f"(mesh.h_contact = {h_contact:g} mm) is too coarse for the film over this "
-            f"contact law, whose surface stiffness cannot damp it; a finer mesh.h_contact "
-            f"resolves it (README, \"Why GW needs a fine contact mesh\")")
+            f"contact law, whose surface stiffness cannot damp it with the central flux: the "
+            f"fv scheme's film.upwind = true damps it, a finer mesh.h_contact resolves it "
+            f"(README, \"The film's node-to-node mode\")")

@@ -293,8 +293,8 @@ class SealModel:
 # FLANK up each side face: a ring that tilts further sets the next node of a side face on
 # the rod
 SHARP_CORNERS = (f"; the ring's corners are sharp (seal.corner_radius = 0): its rod side "
-                 f"runs up to {FLANK:g} mm up the side faces, and a face beyond reached the "
-                 "rod; with seal.corner_radius = 0.1 mm (say) the rounded corners belong to the "
+                 f"runs up its side faces by up to {FLANK:g} mm, and a side-face node beyond "
+                 "reached the rod; with seal.corner_radius = 0.1 mm (say) the rounded corners belong to the "
                  "rod side and carry the film and the asperity contact")
 
 

@@ -430,6 +430,10 @@ def _check_seal_geometry(s, base):
                              f"groove.width = {gr.width:g} mm")
         inner, radial = 0.5 * sl.d1, sl.d2
     else:
+        if sl.corner_radius == 0.0 and s.film.scheme == "paper":
+            raise SceneError("film.scheme = 'paper' integrates dp/dy over the rod side's axial "
+                             "positions, which a sharp-cornered ring's rod side repeats up its "
+                             "side faces: use film.scheme = 'fv' or seal.corner_radius > 0")
         if sl.corner_radius >= 0.5 * min(sl.width, sl.height):
             raise SceneError(f"seal.corner_radius = {sl.corner_radius:g} mm must be below half "
                              f"the rectangle's width and height")

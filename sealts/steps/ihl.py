@@ -20,6 +20,10 @@ class Ihl(Step):
         from ..scene import SceneError
         model, scene, t, u = state.model, state.scene, state.t, state.u
         speed = abs(scene.rod.velocity)
+        if scene.seal.shape == "rectangle" and scene.seal.corner_radius == 0.0:
+            raise SceneError("ihl: the dry profile's dp/dy is taken over the rod side's axial "
+                             "positions, which a sharp-cornered ring's rod side repeats up its "
+                             "side faces: round its corners (seal.corner_radius > 0)")
         chain = model.mesh.chain("rod_side")
         p_fluid = np.zeros(chain.size)
         if state.load is not None:
