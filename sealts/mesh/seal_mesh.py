@@ -57,6 +57,12 @@ GROUPS = ("rod_side", "pressure_side", "groove", "atmosphere_side")
 FLANK = 0.1
 
 
+def flank(r_inner, r_outer):
+    """mm of each side face of a sharp-cornered rectangle in its rod side: FLANK, or a
+    quarter of the ring's height if that is less."""
+    return min(FLANK, 0.25 * (r_outer - r_inner))
+
+
 @dataclass(frozen=True)
 class SealMesh:
     X: np.ndarray              # (nodes, 2) reference coordinates (r, z), mm
@@ -124,7 +130,7 @@ def _key(shape, h_contact, h_bulk, grading_distance, mirror=False, layer_depth=0
         spec["refine"] = {"h": float(h), "points": len(points), "digest": digest[:16]}
     if spec["kind"] == "RectangularRing" and not spec["corner_radius"]:
         del spec["corner_radius"]
-        spec["flank"] = min(FLANK, 0.25 * (spec["r_outer"] - spec["r_inner"]))
+        spec["flank"] = flank(spec["r_inner"], spec["r_outer"])
     if mirror:             # only then: the default meshes keep their keys
         spec["mirror"] = True
     text = json.dumps(spec, sort_keys=True)
@@ -225,7 +231,7 @@ def _rectangle(occ, s, half):
     rc, ri, ro = s.corner_radius, s.r_inner, s.r_outer
     z_top = mid_plane(s) if half else s.z_max
     if rc == 0.0:
-        f = min(FLANK, 0.25 * (ro - ri))
+        f = flank(ri, ro)
         rod_top, rod_low = occ.addPoint(ri, z_top, 0), occ.addPoint(ri, s.z_min, 0)
         low_end = occ.addPoint(ri + f, s.z_min, 0)
         out_low, out_top = occ.addPoint(ro, s.z_min, 0), occ.addPoint(ro, z_top, 0)
@@ -236,8 +242,8 @@ def _rectangle(occ, s, half):
             return rod + sides, [rod] + [[c] for c in sides]
         top_end = occ.addPoint(ri + f, z_top, 0)
         sides.append(occ.addLine(out_top, top_end))
-        flank = occ.addLine(top_end, rod_top)
-        return rod + sides + [flank], [[flank] + rod] + [[c] for c in sides]
+        top = occ.addLine(top_end, rod_top)
+        return rod + sides + [top], [[top] + rod] + [[c] for c in sides]
     rod_top = occ.addPoint(ri, z_top - (0.0 if half else rc), 0)
     rod_low = occ.addPoint(ri, s.z_min + rc, 0)
     low_end = occ.addPoint(ri + rc, s.z_min, 0)
